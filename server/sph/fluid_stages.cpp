@@ -1,0 +1,120 @@
+#include "sph/fluid_stages.h"
+
+#include <cmath>
+
+#include "sph/collision.h"
+
+namespace sph {
+
+KernelTable makeKernelTable(const SimParams& params) {
+  const auto classes = params.classes();
+  KernelTable table;
+  for (int c = 0; c < kSizeClassCount; ++c) table[c] = KernelConstants::forSupport(classes[c].support);
+  return table;
+}
+
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
+                            const NeighborGrid& grid, ParticleSet& p) {
+  const float rho0 = static_cast<float>(params.rest_density);
+  const float k = static_cast<float>(params.gas_stiffness);
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const KernelConstants& ki = kernels[classIndex(p.size_class[i])];
+    const Vec3 xi = p.position[i];
+    float rho = p.mass[i] * poly6(ki, 0.0f);  // the particle's own contribution (j = i)
+    for (std::uint32_t j : grid.neighbors(i)) {
+      const float r2 = (xi - p.position[j]).squaredNorm();
+      float w = poly6(ki, r2);
+      if (p.size_class[j] != p.size_class[i]) {
+        w = 0.5f * (w + poly6(kernels[classIndex(p.size_class[j])], r2));  // eq. (3.35)
+      }
+      rho += p.mass[j] * w;  // eq. (3.11)
+    }
+    p.density[i] = rho;
+    p.pressure[i] = k * (rho - rho0);  // eq. (3.12)
+  }
+}
+
+void computeAccelerations(const SimParams& params, const KernelTable& kernels,
+                          const NeighborGrid& grid, ParticleSet& p) {
+  const float mu = static_cast<float>(params.viscosity);
+  const float sigma = static_cast<float>(params.surface_tension);
+  const float threshold = static_cast<float>(params.surfaceThreshold());
+  const bool tension = params.surface_tension_enabled && sigma > 0.0f;
+  const Vec3 gravity(0.0f, static_cast<float>(params.gravity), 0.0f);
+  const std::size_t n = p.size();
+
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const SizeClass ci = p.size_class[i];
+    const KernelConstants& ki = kernels[classIndex(ci)];
+    const Vec3 xi = p.position[i];
+    const Vec3 ui = p.velocity[i];
+    const float rhoi = p.density[i];
+    const float pi_over_rho2 = p.pressure[i] / (rhoi * rhoi);
+
+    Vec3 pressure_acc = Vec3::Zero();   // f_pressure / rho_i
+    Vec3 viscous = Vec3::Zero();        // f_viscosity / mu
+    Vec3 normal = Vec3::Zero();         // n = grad c, eq. (3.17)
+    // The colour field sums over every j including i (3.16); only the Laplacian has a self term.
+    float colour_laplacian = p.mass[i] / rhoi * poly6Laplacian(ki, 0.0f);
+
+    for (std::uint32_t j : grid.neighbors(i)) {
+      const Vec3 r = xi - p.position[j];
+      const float r2 = r.squaredNorm();
+      const float rl = std::sqrt(r2);
+      const float inv_r = rl > 0.0f ? 1.0f / rl : 0.0f;
+      float spiky = spikyGradFactor(ki, rl, inv_r);
+      float visc = viscosityLaplacian(ki, rl);
+      float cgrad = poly6GradFactor(ki, r2);
+      float clap = poly6Laplacian(ki, r2);
+      if (p.size_class[j] != ci) {
+        // Averaged kernels, eq. (3.35): the pair sees the same kernel from both sides.
+        const KernelConstants& kj = kernels[classIndex(p.size_class[j])];
+        spiky = 0.5f * (spiky + spikyGradFactor(kj, rl, inv_r));
+        visc = 0.5f * (visc + viscosityLaplacian(kj, rl));
+        cgrad = 0.5f * (cgrad + poly6GradFactor(kj, r2));
+        clap = 0.5f * (clap + poly6Laplacian(kj, r2));
+      }
+      const float mj = p.mass[j];
+      const float rhoj = p.density[j];
+      const float volj = mj / rhoj;
+      // Pressure, eq. (3.13) divided by rho_i: symmetric in i and j, so momentum is conserved.
+      pressure_acc -= (mj * (pi_over_rho2 + p.pressure[j] / (rhoj * rhoj)) * spiky) * r;
+      // Viscosity, eq. (3.14).
+      viscous += (volj * visc) * (p.velocity[j] - ui);
+      // Colour field gradient and Laplacian, eqs. (3.16)-(3.18).
+      normal += (volj * cgrad) * r;
+      colour_laplacian += volj * clap;
+    }
+
+    Vec3 acc = pressure_acc + (mu / rhoi) * viscous + gravity;  // gravity: f = rho g, eq. (3.15)
+    const float normal_len = normal.norm();
+    if (tension && normal_len >= threshold) {
+      // Surface tension, eq. (3.19): f = -sigma lap(c) n / |n|, applied where |n| >= l (3.36).
+      acc += (-sigma * colour_laplacian / (normal_len * rhoi)) * normal;
+    }
+    p.acceleration[i] = acc;
+    p.normal_length[i] = normal_len;
+  }
+}
+
+void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,
+                         ParticleSet& p) {
+  const float dt = static_cast<float>(params.time_step);
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 u = p.velocity[i] + dt * p.acceleration[i];  // eq. (3.21)
+    Vec3 x = p.position[i] + dt * u;                   // eq. (3.22), with the updated velocity
+    const float r = p.radius[i];
+    for (const Sphere& s : boundary.spheres) collideSphere(s, r, x, u);
+    for (const Cylinder& c : boundary.cylinders) collideCylinder(c, r, x, u);
+    collideBox(box, r, x, u);  // last: whatever the obstacles did, the particle ends inside the box
+    p.velocity[i] = u;
+    p.position[i] = x;
+  }
+}
+
+}  // namespace sph

@@ -1,0 +1,33 @@
+// The per-step stages of the SPH fluid (thesis 3.3, 3.4, 3.5), each a parallel loop in which a
+// particle reads its neighbours and writes only its own attributes: the result does not depend on
+// the thread count. Kernels are the averaged kernels of eq. (3.35).
+#pragma once
+
+#include <array>
+
+#include "sph/boundary.h"
+#include "sph/kernels.h"
+#include "sph/neighbor_grid.h"
+#include "sph/params.h"
+#include "sph/particles.h"
+
+namespace sph {
+
+using KernelTable = std::array<KernelConstants, kSizeClassCount>;
+
+KernelTable makeKernelTable(const SimParams& params);
+
+// Density, eq. (3.11), and pressure, eq. (3.12).
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
+                            const NeighborGrid& grid, ParticleSet& particles);
+
+// Acceleration a = F / rho from pressure (3.13), viscosity (3.14), gravity (3.15) and surface
+// tension (3.16)-(3.19) where |n| >= l (3.36). Also stores |n| per particle.
+void computeAccelerations(const SimParams& params, const KernelTable& kernels,
+                          const NeighborGrid& grid, ParticleSet& particles);
+
+// Semi-implicit Euler, eqs. (3.21)-(3.22), then collisions with obstacles and the box at `box`.
+void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,
+                         ParticleSet& particles);
+
+}  // namespace sph

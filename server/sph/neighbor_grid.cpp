@@ -1,0 +1,125 @@
+#include "sph/neighbor_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sph {
+
+void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t particle_capacity) {
+  if (!(cell_size > 0.0f) || !std::isfinite(cell_size)) {
+    throw std::invalid_argument("neighbour grid: cell size must be finite and > 0");
+  }
+  cell_size_ = cell_size;
+  inv_cell_size_ = 1.0f / cell_size;
+  // One spare cell on each side: particles touching the walls still have a full 3x3x3 block.
+  origin_ = bounds.min.cast<float>() - Eigen::Vector3f::Constant(cell_size);
+  std::size_t cells = 1;
+  for (int a = 0; a < 3; ++a) {
+    const double extent = bounds.max[a] - bounds.min[a];
+    dims_[a] = static_cast<int>(std::ceil(extent / cell_size)) + 2;
+    cells *= static_cast<std::size_t>(dims_[a]);
+  }
+  if (cells > (std::size_t{1} << 28)) {
+    throw std::invalid_argument("neighbour grid: box too large for the support radius (" +
+                                std::to_string(cells) + " cells)");
+  }
+  cell_start_.assign(cells + 1, 0);
+  cell_particles_.reserve(particle_capacity);
+  particle_cell_.reserve(particle_capacity);
+  neighbor_count_.reserve(particle_capacity);
+  neighbor_index_.resize(particle_capacity * stride_);
+}
+
+std::uint32_t NeighborGrid::cellOf(const Vec3& p) const {
+  int c[3];
+  for (int a = 0; a < 3; ++a) {
+    const float f = (p[a] - origin_[a]) * inv_cell_size_;
+    // NaN and out-of-grid positions land in the border cells (the caller reports NaN separately).
+    c[a] = std::isfinite(f) ? std::clamp(static_cast<int>(f), 0, dims_[a] - 1) : 0;
+  }
+  return static_cast<std::uint32_t>((c[2] * dims_[1] + c[1]) * dims_[0] + c[0]);
+}
+
+void NeighborGrid::bin(const ParticleSet& particles) {
+  const std::size_t n = particles.size();
+  const std::size_t cells = cellCount();
+  particle_cell_.resize(n);
+  cell_particles_.resize(n);
+  neighbor_count_.resize(n);
+
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) particle_cell_[i] = cellOf(particles.position[i]);
+
+  // Counting sort (serial, so the order inside a cell is always ascending particle index).
+  std::fill(cell_start_.begin(), cell_start_.end(), 0u);
+  for (std::size_t i = 0; i < n; ++i) ++cell_start_[particle_cell_[i] + 1];
+  for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  {
+    // cell_start_[c] doubles as the write cursor of cell c; restored afterwards.
+    for (std::size_t i = 0; i < n; ++i) cell_particles_[cell_start_[particle_cell_[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
+    cell_start_[0] = 0;
+  }
+}
+
+void NeighborGrid::build(const ParticleSet& particles) {
+  bin(particles);
+  const std::size_t n = particles.size();
+  for (;;) {
+    if (neighbor_index_.size() < n * stride_) neighbor_index_.resize(n * stride_);
+    std::uint32_t max_count = 0;
+#pragma omp parallel for schedule(static) reduction(max : max_count)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t count = gatherNeighbors(particles, i);
+      max_count = std::max(max_count, count);
+    }
+    if (max_count <= stride_) break;
+    // Rare: compression pushed some particle past the stride. Grow with headroom and redo.
+    stride_ = static_cast<std::size_t>(max_count) + max_count / 2;
+    ++stride_growths_;
+  }
+}
+
+std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::size_t i) {
+  const Vec3 pi = particles.position[i];
+  const float hi = particles.support[i];
+  const std::uint32_t cell = particle_cell_[i];
+  const int cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims_[0]));
+  const int cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims_[0])) % static_cast<std::uint32_t>(dims_[1]));
+  const int cz = static_cast<int>(cell / static_cast<std::uint32_t>(dims_[0] * dims_[1]));
+  const int x0 = std::max(cx - 1, 0);
+  const int x1 = std::min(cx + 1, dims_[0] - 1);
+
+  std::uint32_t* out = neighbor_index_.data() + i * stride_;
+  std::uint32_t count = 0;
+  for (int z = std::max(cz - 1, 0); z <= std::min(cz + 1, dims_[2] - 1); ++z) {
+    for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, dims_[1] - 1); ++y) {
+      // Cells x0..x1 of one row are contiguous in the sorted list.
+      const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
+      const std::uint32_t begin = cell_start_[row + x0];
+      const std::uint32_t end = cell_start_[row + x1 + 1];
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const std::uint32_t j = cell_particles_[k];
+        if (j == i) continue;
+        const float reach = 0.5f * (hi + particles.support[j]);  // eq. (3.34)
+        if ((particles.position[j] - pi).squaredNorm() <= reach * reach) {
+          if (count < stride_) out[count] = j;
+          ++count;
+        }
+      }
+    }
+  }
+  neighbor_count_[i] = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(stride_));
+  return count;
+}
+
+double NeighborGrid::meanNeighbors() const {
+  if (neighbor_count_.empty()) return 0.0;
+  double sum = 0.0;
+  for (std::uint32_t c : neighbor_count_) sum += c;
+  return sum / static_cast<double>(neighbor_count_.size());
+}
+
+}  // namespace sph

@@ -1,0 +1,65 @@
+// Neighbour search on a uniform grid: a counting sort bins particles into cells (deterministic,
+// serial), then a parallel pass writes each particle's neighbours into a flat list with a fixed
+// stride. Neighbours follow the adaptive criterion |ri - rj| <= (hi + hj) / 2, eq. (3.34), so mixed
+// SMALL and LARGE particles need no second code path.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "sph/boundary.h"
+#include "sph/particles.h"
+
+namespace sph {
+
+class NeighborGrid {
+ public:
+  // Sizes the grid to cover `bounds` with cubic cells of edge `cell_size` (>= the largest support
+  // radius). Allocates; call outside the step.
+  void configure(const Aabb& bounds, float cell_size, std::size_t particle_capacity);
+
+  // Bins the particles and rebuilds every neighbour list. Allocates only when some particle has
+  // more neighbours than the current stride (the stride then grows and the pass is redone).
+  void build(const ParticleSet& particles);
+
+  // Bins the particles only (no neighbour lists): cellOrder() then gives the order to permute
+  // the particle arrays into. The lists are stale until the next build().
+  void bin(const ParticleSet& particles);
+
+  // Neighbours of particle i, excluding i itself, in a deterministic order.
+  std::span<const std::uint32_t> neighbors(std::size_t i) const {
+    return {neighbor_index_.data() + i * stride_, neighbor_count_[i]};
+  }
+  std::uint32_t neighborCount(std::size_t i) const { return neighbor_count_[i]; }
+
+  // Particle indices sorted by cell: the order to permute the particle arrays into.
+  std::span<const std::uint32_t> cellOrder() const { return cell_particles_; }
+
+  float cellSize() const { return cell_size_; }
+  std::size_t cellCount() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
+  std::size_t stride() const { return stride_; }
+  std::size_t strideGrowths() const { return stride_growths_; }
+  double meanNeighbors() const;
+
+ private:
+  std::uint32_t cellOf(const Vec3& p) const;
+  // Writes the neighbours of particle i; returns the true count (may exceed the stride).
+  std::uint32_t gatherNeighbors(const ParticleSet& particles, std::size_t i);
+
+  Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
+  float cell_size_ = 1.0f;
+  float inv_cell_size_ = 1.0f;
+  int dims_[3] = {1, 1, 1};
+  std::size_t stride_ = 96;
+  std::size_t stride_growths_ = 0;
+
+  std::vector<std::uint32_t> cell_start_;      // cells + 1 offsets into cell_particles_
+  std::vector<std::uint32_t> cell_particles_;  // particle indices grouped by cell
+  std::vector<std::uint32_t> particle_cell_;   // cell of each particle
+  std::vector<std::uint32_t> neighbor_count_;
+  std::vector<std::uint32_t> neighbor_index_;  // particles x stride_
+};
+
+}  // namespace sph

@@ -1,0 +1,75 @@
+#include "sph/particles.h"
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+namespace sph {
+
+ParticleSet::ParticleSet(std::size_t capacity) : capacity_(capacity) {
+  forEachAttribute([&](auto& v) { v.reserve(capacity_); });
+}
+
+std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const SizeClassProps& props) {
+  if (size() >= capacity_) {
+    throw std::length_error("particle capacity " + std::to_string(capacity_) + " exceeded");
+  }
+  const std::uint32_t new_id = next_id_++;
+  id.push_back(new_id);
+  size_class.push_back(c);
+  mass.push_back(static_cast<float>(props.mass));
+  radius.push_back(static_cast<float>(props.radius));
+  support.push_back(static_cast<float>(props.support));
+  position.push_back(p);
+  velocity.push_back(v);
+  acceleration.push_back(Vec3::Zero());
+  density.push_back(0.0f);
+  pressure.push_back(0.0f);
+  normal_length.push_back(0.0f);
+  return new_id;
+}
+
+void ParticleSet::clear() {
+  forEachAttribute([](auto& v) { v.clear(); });
+  next_id_ = 0;
+}
+
+void ParticleSet::permute(std::span<const std::uint32_t> order) {
+  if (order.size() != size()) throw std::invalid_argument("permute: order size mismatch");
+  forEachAttribute([&](auto& v) {
+    // One scratch copy per attribute type, grown once to the ceiling and reused; `v` keeps its own
+    // buffer (and so its reserved capacity).
+    using Vec = std::remove_reference_t<decltype(v)>;
+    static thread_local Vec scratch;
+    scratch.assign(v.begin(), v.end());
+    for (std::size_t k = 0; k < order.size(); ++k) v[k] = scratch[order[k]];
+  });
+}
+
+std::size_t ParticleSet::compact(std::span<const std::uint8_t> keep) {
+  if (keep.size() != size()) throw std::invalid_argument("compact: keep size mismatch");
+  std::size_t n = 0;
+  forEachAttribute([&](auto& v) {
+    std::size_t w = 0;
+    for (std::size_t r = 0; r < v.size(); ++r) {
+      if (keep[r]) v[w++] = v[r];
+    }
+    v.resize(w);
+    n = w;
+  });
+  return n;
+}
+
+double ParticleSet::totalMass() const {
+  double m = 0.0;
+  for (float mi : mass) m += mi;
+  return m;
+}
+
+std::size_t ParticleSet::countOf(SizeClass c) const {
+  std::size_t n = 0;
+  for (SizeClass s : size_class) n += (s == c);
+  return n;
+}
+
+}  // namespace sph

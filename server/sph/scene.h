@@ -1,0 +1,48 @@
+// A scenario (thesis 4.2) as plain data: container and obstacles over time, where the water starts,
+// how many particles, how long it runs and where the default camera looks. Scene files (JSON) are
+// read into this by the scene loader (server/scene/); the library itself knows no file format.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "sph/boundary.h"
+#include "sph/params.h"
+#include "sph/particles.h"
+
+namespace sph {
+
+struct CameraSpec {
+  Eigen::Vector3d eye{0.0, 1.0, 3.0};
+  Eigen::Vector3d target{0.0, 0.0, 0.0};
+  Eigen::Vector3d up{0.0, 1.0, 0.0};
+  double fov_y_degrees = 45.0;
+  int viewport_width = 1280;
+  int viewport_height = 720;
+  double near_plane = 0.05;
+  double far_plane = 50.0;
+};
+
+struct Scene {
+  std::string name;
+  std::string source;          // file it was read from, for messages
+  std::string description;
+  SimParams params;
+  Boundary boundary;
+  // The water starts as a lattice filling this region from its floor up (so it is as shallow as
+  // the region's footprint allows); the region need not be full.
+  Aabb water;
+  int large_particles = 10000;  // adaptive methods start with this many LARGE particles
+  int frames = 900;             // steps in a full-length run
+  CameraSpec camera;
+};
+
+// Which class the water starts in: adaptive methods start LARGE; the regular method fills the same
+// mass with SMALL particles (m_LARGE / m_SMALL as many: 20,000 with the thesis preset).
+int initialParticleCount(const Scene& scene, SizeClass start_class);
+
+// Fills `out` with the scene's water on a cubic lattice of spacing cbrt(m / rho0), bottom layer first.
+// Throws std::invalid_argument when the region cannot hold the particles or lies outside the box.
+void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out);
+
+}  // namespace sph
