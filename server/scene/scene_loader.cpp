@@ -1,5 +1,6 @@
 #include "scene/scene_loader.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

@@ -11,14 +11,14 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   if (!(cell_size > 0.0f) || !std::isfinite(cell_size)) {
     throw std::invalid_argument("neighbour grid: cell size must be finite and > 0");
   }
-  cell_size_ = cell_size;
-  inv_cell_size_ = 1.0f / cell_size;
+  cell_size_ = cell_size / kCellsPerSupport;
+  inv_cell_size_ = 1.0f / cell_size_;
   // One spare cell on each side: particles touching the walls still have a full 3x3x3 block.
-  origin_ = bounds.min.cast<float>() - Eigen::Vector3f::Constant(cell_size);
+  origin_ = bounds.min.cast<float>() - Eigen::Vector3f::Constant(cell_size_);
   std::size_t cells = 1;
   for (int a = 0; a < 3; ++a) {
     const double extent = bounds.max[a] - bounds.min[a];
-    dims_[a] = static_cast<int>(std::ceil(extent / cell_size)) + 2;
+    dims_[a] = static_cast<int>(std::ceil(extent / cell_size_)) + 2;
     cells *= static_cast<std::size_t>(dims_[a]);
   }
   if (cells > (std::size_t{1} << 28)) {
@@ -28,6 +28,7 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   cell_start_.assign(cells + 1, 0);
   cell_particles_.reserve(particle_capacity);
   particle_cell_.reserve(particle_capacity);
+  sorted_points_.reserve(particle_capacity);
   neighbor_count_.reserve(particle_capacity);
   neighbor_index_.resize(particle_capacity * stride_);
 }
@@ -62,6 +63,13 @@ void NeighborGrid::bin(const ParticleSet& particles) {
     for (std::size_t c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
     cell_start_[0] = 0;
   }
+  sorted_points_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t j = cell_particles_[k];
+    const Vec3& x = particles.position[j];
+    sorted_points_[k] = Eigen::Vector4f(x.x(), x.y(), x.z(), particles.support[j]);
+  }
 }
 
 void NeighborGrid::build(const ParticleSet& particles) {
@@ -89,22 +97,27 @@ std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::s
   const int cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims_[0]));
   const int cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims_[0])) % static_cast<std::uint32_t>(dims_[1]));
   const int cz = static_cast<int>(cell / static_cast<std::uint32_t>(dims_[0] * dims_[1]));
-  const int x0 = std::max(cx - 1, 0);
-  const int x1 = std::min(cx + 1, dims_[0] - 1);
+  constexpr int R = kCellsPerSupport;
+  const int x0 = std::max(cx - R, 0);
+  const int x1 = std::min(cx + R, dims_[0] - 1);
 
   std::uint32_t* out = neighbor_index_.data() + i * stride_;
   std::uint32_t count = 0;
-  for (int z = std::max(cz - 1, 0); z <= std::min(cz + 1, dims_[2] - 1); ++z) {
-    for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, dims_[1] - 1); ++y) {
+  for (int z = std::max(cz - R, 0); z <= std::min(cz + R, dims_[2] - 1); ++z) {
+    for (int y = std::max(cy - R, 0); y <= std::min(cy + R, dims_[1] - 1); ++y) {
       // Cells x0..x1 of one row are contiguous in the sorted list.
       const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
       const std::uint32_t begin = cell_start_[row + x0];
       const std::uint32_t end = cell_start_[row + x1 + 1];
       for (std::uint32_t k = begin; k < end; ++k) {
-        const std::uint32_t j = cell_particles_[k];
-        if (j == i) continue;
-        const float reach = 0.5f * (hi + particles.support[j]);  // eq. (3.34)
-        if ((particles.position[j] - pi).squaredNorm() <= reach * reach) {
+        const Eigen::Vector4f& q = sorted_points_[k];
+        const float dx = q.x() - pi.x();
+        const float dy = q.y() - pi.y();
+        const float dz = q.z() - pi.z();
+        const float reach = 0.5f * (hi + q.w());  // eq. (3.34)
+        if (dx * dx + dy * dy + dz * dz <= reach * reach) {
+          const std::uint32_t j = cell_particles_[k];
+          if (j == i) continue;
           if (count < stride_) out[count] = j;
           ++count;
         }

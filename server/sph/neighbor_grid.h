@@ -52,12 +52,17 @@ class NeighborGrid {
   float cell_size_ = 1.0f;
   float inv_cell_size_ = 1.0f;
   int dims_[3] = {1, 1, 1};
+  // Cells are half a support radius wide: a 5x5x5 block of them covers the reach with about 40 %
+  // fewer candidates than 3x3x3 cells of a full radius.
+  static constexpr int kCellsPerSupport = 2;
   std::size_t stride_ = 96;
   std::size_t stride_growths_ = 0;
 
   std::vector<std::uint32_t> cell_start_;      // cells + 1 offsets into cell_particles_
   std::vector<std::uint32_t> cell_particles_;  // particle indices grouped by cell
   std::vector<std::uint32_t> particle_cell_;   // cell of each particle
+  // Position and support radius of cell_particles_[k] at k: the candidate loop reads memory in order.
+  std::vector<Eigen::Vector4f> sorted_points_;
   std::vector<std::uint32_t> neighbor_count_;
   std::vector<std::uint32_t> neighbor_index_;  // particles x stride_
 };

@@ -1,0 +1,146 @@
+#include "bench/bench_output.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <vector>
+
+namespace bench {
+
+namespace {
+
+PhaseStats stats(const RunResult& run, double sph::PhaseTimings::*field) {
+  PhaseStats s;
+  if (run.records.empty()) return s;
+  std::vector<double> v;
+  v.reserve(run.records.size());
+  for (const FrameRecord& r : run.records) v.push_back(r.ms.*field);
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  s.mean = sum / static_cast<double>(v.size());
+  std::sort(v.begin(), v.end());
+  s.p95 = v[std::min(v.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(v.size())))];
+  return s;
+}
+
+std::ofstream openOut(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write '" + path + "'");
+  return out;
+}
+
+nlohmann::json phaseJson(const PhaseStats& p) { return {{"mean_ms", p.mean}, {"p95_ms", p.p95}}; }
+
+}  // namespace
+
+Summary summarize(const RunResult& run) {
+  Summary s;
+  s.neighbor = stats(run, &sph::PhaseTimings::neighbor_ms);
+  s.density_pressure = stats(run, &sph::PhaseTimings::density_pressure_ms);
+  s.accel_integrate_collide = stats(run, &sph::PhaseTimings::accel_integrate_collide_ms);
+  s.adaptive = stats(run, &sph::PhaseTimings::adaptive_ms);
+  s.total = stats(run, &sph::PhaseTimings::total_ms);
+  s.steps_per_s = s.total.mean > 0.0 ? 1000.0 / s.total.mean : 0.0;
+  const double n = std::max<std::size_t>(run.records.size(), 1);
+  for (const FrameRecord& r : run.records) {
+    s.mean_large += static_cast<double>(r.n_large) / n;
+    s.mean_small += static_cast<double>(r.n_small) / n;
+    s.mean_neighbors += r.mean_neighbors / n;
+    s.mean_density_ratio += r.mean_density_ratio / n;
+    s.max_density_ratio = std::max(s.max_density_ratio, r.max_density_ratio);
+    s.nan_values += r.nan_values;
+    s.outside_box += r.outside_box;
+  }
+  return s;
+}
+
+void writeSummaryJson(const RunResult& run, const Summary& s, const std::string& path) {
+  nlohmann::json j;
+  j["scene"] = run.scene;
+  j["method"] = run.method;
+  j["preset"] = run.preset;
+  j["frames"] = run.frames;
+  j["threads"] = run.threads;
+  j["phases"] = {{"neighbor_search", phaseJson(s.neighbor)},
+                 {"density_pressure", phaseJson(s.density_pressure)},
+                 {"accel_integrate_collide", phaseJson(s.accel_integrate_collide)},
+                 {"adaptive", phaseJson(s.adaptive)},
+                 {"total", phaseJson(s.total)}};
+  j["steps_per_s"] = s.steps_per_s;
+  j["mean_large"] = s.mean_large;
+  j["mean_small"] = s.mean_small;
+  j["mean_neighbors_per_particle"] = s.mean_neighbors;
+  j["mean_density_over_rho0"] = s.mean_density_ratio;
+  j["max_density_over_rho0"] = s.max_density_ratio;
+  j["total_mass_start"] = run.mass_start;
+  j["total_mass_end"] = run.mass_end;
+  j["nan_values"] = s.nan_values;                // summed over all frames
+  j["particles_outside_box"] = s.outside_box;    // summed over all frames
+  openOut(path) << j.dump(2) << "\n";
+}
+
+void writeFramesCsv(const RunResult& run, const std::string& path) {
+  std::ofstream out = openOut(path);
+  out << "frame,sim_time,n_large,n_small,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
+         "adaptive_ms,total_ms,mean_neighbors,mean_density_over_rho0,max_density_over_rho0\n";
+  char line[512];
+  for (const FrameRecord& r : run.records) {
+    std::snprintf(line, sizeof line, "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.4f,%.4f\n", r.frame,
+                  r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
+                  r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, r.mean_neighbors,
+                  r.mean_density_ratio, r.max_density_ratio);
+    out << line;
+  }
+}
+
+std::string summaryText(const RunResult& run, const Summary& s) {
+  char buf[1024];
+  std::snprintf(buf, sizeof buf,
+                "%s/%s: %d frames, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
+                "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s | "
+                "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
+                "NaN %zu, outside %zu",
+                run.scene.c_str(), run.method.c_str(), run.frames, run.threads, s.neighbor.mean,
+                s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean,
+                s.total.p95, s.steps_per_s, s.mean_large, s.mean_small, s.mean_neighbors,
+                s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values,
+                s.outside_box);
+  return buf;
+}
+
+void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::string& path) {
+  std::ofstream out = openOut(path);
+  const std::size_t n = p.size();
+  if (format == SnapshotFormat::Csv) {
+    out << "id,x,y,z,vx,vy,vz,density,size_class\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& x = p.position[i];
+      const auto& u = p.velocity[i];
+      out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ','
+          << u.z() << ',' << p.density[i] << ',' << sph::sizeClassName(p.size_class[i]) << '\n';
+    }
+    return;
+  }
+  // Legacy VTK polydata (ASCII): ParaView opens it directly.
+  out << "# vtk DataFile Version 3.0\nsph particles\nASCII\nDATASET POLYDATA\n";
+  out << "POINTS " << n << " float\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    out << p.position[i].x() << ' ' << p.position[i].y() << ' ' << p.position[i].z() << '\n';
+  }
+  out << "VERTICES " << n << ' ' << 2 * n << '\n';
+  for (std::size_t i = 0; i < n; ++i) out << "1 " << i << '\n';
+  out << "POINT_DATA " << n << "\nVECTORS velocity float\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    out << p.velocity[i].x() << ' ' << p.velocity[i].y() << ' ' << p.velocity[i].z() << '\n';
+  }
+  out << "SCALARS density float 1\nLOOKUP_TABLE default\n";
+  for (std::size_t i = 0; i < n; ++i) out << p.density[i] << '\n';
+  out << "SCALARS size_class int 1\nLOOKUP_TABLE default\n";  // 0 SMALL, 1 LARGE
+  for (std::size_t i = 0; i < n; ++i) out << static_cast<int>(p.size_class[i]) << '\n';
+  out << "SCALARS id unsigned_int 1\nLOOKUP_TABLE default\n";
+  for (std::size_t i = 0; i < n; ++i) out << p.id[i] << '\n';
+}
+
+}  // namespace bench

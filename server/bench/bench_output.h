@@ -1,0 +1,33 @@
+// Writes a run's summary.json and frames.csv, and particle snapshots (CSV or legacy VTK).
+#pragma once
+
+#include <string>
+
+#include "bench/bench_run.h"
+#include "sph/particles.h"
+
+namespace bench {
+
+struct PhaseStats {
+  double mean = 0.0;
+  double p95 = 0.0;
+};
+
+struct Summary {
+  PhaseStats neighbor, density_pressure, accel_integrate_collide, adaptive, total;
+  double steps_per_s = 0.0;
+  double mean_large = 0.0, mean_small = 0.0, mean_neighbors = 0.0;
+  double mean_density_ratio = 0.0, max_density_ratio = 0.0;
+  std::size_t nan_values = 0, outside_box = 0;
+};
+
+Summary summarize(const RunResult& run);
+void writeSummaryJson(const RunResult& run, const Summary& s, const std::string& path);
+void writeFramesCsv(const RunResult& run, const std::string& path);
+// One line for the terminal.
+std::string summaryText(const RunResult& run, const Summary& s);
+
+enum class SnapshotFormat { Csv, Vtk };
+void writeSnapshot(const sph::ParticleSet& particles, SnapshotFormat format, const std::string& path);
+
+}  // namespace bench

@@ -1,0 +1,53 @@
+// One headless run of a scene with a method: steps the simulation, records per-frame timings and
+// counts, and the health checks (mass, NaN, particles outside the box, density, neighbours).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sph/scene.h"
+#include "sph/simulation.h"
+
+namespace bench {
+
+struct FrameRecord {
+  int frame = 0;
+  double sim_time = 0.0;
+  std::size_t n_large = 0;
+  std::size_t n_small = 0;
+  sph::PhaseTimings ms;
+  double mean_neighbors = 0.0;
+  double mean_density_ratio = 0.0;  // mean rho / rho0
+  double max_density_ratio = 0.0;
+  std::size_t nan_values = 0;
+  std::size_t outside_box = 0;
+};
+
+struct RunResult {
+  std::string scene;
+  std::string method;
+  std::string preset;
+  int frames = 0;
+  int threads = 0;
+  double mass_start = 0.0;
+  double mass_end = 0.0;
+  std::vector<FrameRecord> records;
+};
+
+struct RunOptions {
+  int frames = 0;  // 0: the scene's own count
+  int threads = 2;
+  // Called after every frame (progress, snapshots); may be empty.
+  std::function<void(const sph::Simulation&, const FrameRecord&)> on_frame;
+};
+
+// Methods this build knows; `regular` is all SMALL with no adaptive step.
+const std::vector<std::string>& knownMethods();
+
+RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options);
+
+// Health of the particle set at the current instant (used per frame and by tests).
+void measureState(const sph::Simulation& sim, FrameRecord& record);
+
+}  // namespace bench

@@ -1,0 +1,114 @@
+// Scene files: the five shipped scenes load; bad files fail with the file and key named.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scene/scene_loader.h"
+#include "sph/particles.h"
+
+namespace {
+
+const char* kMinimal = R"({"box": {"min": [0,0,0], "max": [1,1,1]},
+                           "water": {"min": [0,0,0], "max": [1,0.5,1]}, "large_particles": 100})";
+
+std::string errorOf(const std::string& text) {
+  try {
+    scene::parseScene(text, "test.json");
+  } catch (const scene::SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string withKey(const std::string& extra) {
+  std::string s = kMinimal;
+  s.insert(1, extra + ",");
+  return s;
+}
+
+}  // namespace
+
+TEST(SceneLoader, ShippedScenesLoadAndFill) {
+  const auto names = scene::listScenes(scene::defaultSceneDir());
+  for (const char* expected : {"dambreak", "dambreak_obstacles", "large_box", "small_box", "wave"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+  }
+  for (const auto& name : names) {
+    const sph::Scene s = scene::loadScene(name);
+    EXPECT_EQ(s.large_particles, 10000) << name;
+    sph::ParticleSet small_set, large_set;
+    sph::fillWater(s, sph::SizeClass::Small, small_set);
+    sph::fillWater(s, sph::SizeClass::Large, large_set);
+    EXPECT_EQ(small_set.size(), 20000u) << name;
+    EXPECT_EQ(large_set.size(), 10000u) << name;
+    // The same water mass either way.
+    EXPECT_NEAR(small_set.totalMass(), large_set.totalMass(), 1e-3) << name;
+  }
+}
+
+TEST(SceneLoader, MinimalSceneGetsThesisDefaults) {
+  const sph::Scene s = scene::parseScene(kMinimal, "test.json");
+  EXPECT_DOUBLE_EQ(s.params.gas_stiffness, 3.0);
+  EXPECT_DOUBLE_EQ(s.params.time_step, 0.01);
+  EXPECT_EQ(s.frames, 900);
+}
+
+TEST(SceneLoader, ParamsOverrideThePreset) {
+  const sph::Scene s = scene::parseScene(withKey(R"("params": {"gas_stiffness": 30, "time_step": 0.003})"), "t");
+  EXPECT_DOUBLE_EQ(s.params.gas_stiffness, 30.0);
+  EXPECT_DOUBLE_EQ(s.params.time_step, 0.003);
+}
+
+TEST(SceneLoader, UnknownKeyIsNamed) {
+  const std::string e = errorOf(withKey(R"("bogus": 1)"));
+  EXPECT_NE(e.find("test.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("'bogus'"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, UnknownParameterIsNamed) {
+  const std::string e = errorOf(withKey(R"("params": {"stiffness": 3})"));
+  EXPECT_NE(e.find("params.stiffness"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, NegativeAndNonFiniteSizesAreRejected) {
+  EXPECT_NE(errorOf(withKey(R"("spheres": [{"centre": [0.5,0.5,0.5], "radius": -1}])")).find("spheres[0].radius"),
+            std::string::npos);
+  // JSON has no NaN literal; a string where a number belongs is the nearest a file can get.
+  EXPECT_NE(errorOf(withKey(R"("cylinders": [{"x": "nan", "z": 0, "radius": 0.1}])")).find("cylinders[0].x"),
+            std::string::npos);
+  EXPECT_NE(errorOf(withKey(R"("params": {"rest_density": 0})")).find("params.rest_density"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"box": {"min": [0,0,0], "max": [1,-1,1]}, "water": {"min": [0,0,0], "max": [1,1,1]}})")
+                .find("'box'"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, WaterOutsideTheBoxIsRejected) {
+  const std::string e =
+      errorOf(R"({"box": {"min": [0,0,0], "max": [1,1,1]}, "water": {"min": [0,0,0], "max": [2,1,1]}})");
+  EXPECT_NE(e.find("'water'"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, MissingKeyAndBadJsonAreReported) {
+  EXPECT_NE(errorOf(R"({"box": {"min": [0,0,0], "max": [1,1,1]}})").find("'water'"), std::string::npos);
+  EXPECT_NE(errorOf("{not json").find("not valid JSON"), std::string::npos);
+}
+
+TEST(SceneLoader, UnknownSceneNameListsKnownOnes) {
+  try {
+    scene::loadScene("no_such_scene");
+    FAIL() << "expected SceneError";
+  } catch (const scene::SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("unknown scene 'no_such_scene'"), std::string::npos) << what;
+    EXPECT_NE(what.find("dambreak"), std::string::npos) << what;
+  }
+  EXPECT_THROW(scene::loadScene("/nonexistent/file.json"), scene::SceneError);
+}
+
+TEST(SceneLoader, WaterRegionTooSmallForTheParticlesFailsToFill) {
+  const sph::Scene s = scene::parseScene(
+      R"({"box": {"min": [0,0,0], "max": [1,1,1]}, "water": {"min": [0,0,0], "max": [0.1,0.1,0.1]}})", "small.json");
+  sph::ParticleSet p;
+  EXPECT_THROW(sph::fillWater(s, sph::SizeClass::Small, p), std::invalid_argument);
+}

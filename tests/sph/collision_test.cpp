@@ -1,0 +1,137 @@
+// Collision response, eqs. (3.23)-(3.32): a penetrating particle goes to the contact point, its
+// radius included, and loses the part of its velocity (relative to the surface) that points in.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "sph/collision.h"
+
+namespace {
+
+using sph::Vec3;
+
+constexpr float kR = 0.01f;  // particle radius
+constexpr float kTol = 1e-5f;
+
+TEST(CollideSphere, PushesToSurfaceAndRemovesInwardVelocity) {
+  sph::Sphere s{Eigen::Vector3d(0.5, 0.4, 0.3), 0.1};
+  const Vec3 c = s.centre.cast<float>();
+  const Vec3 n = Vec3(1.0f, 2.0f, -0.5f).normalized();
+  const Vec3 t = n.cross(Vec3::UnitX()).normalized();  // tangential
+  Vec3 x = c + 0.05f * n;
+  Vec3 u = -2.0f * n + 0.3f * t;
+  ASSERT_TRUE(sph::collideSphere(s, kR, x, u));
+  EXPECT_NEAR((x - c).norm(), 0.1f + kR, kTol);
+  EXPECT_NEAR((x - c).normalized().dot(n), 1.0f, kTol);
+  EXPECT_NEAR(u.dot(n), 0.0f, kTol);
+  EXPECT_NEAR(u.dot(t), 0.3f, kTol);
+}
+
+TEST(CollideSphere, KeepsOutwardVelocity) {
+  sph::Sphere s{Eigen::Vector3d(0.0, 0.0, 0.0), 0.2};
+  Vec3 x(0.0f, 0.15f, 0.0f);
+  Vec3 u(0.1f, 1.5f, 0.0f);
+  const Vec3 u0 = u;
+  ASSERT_TRUE(sph::collideSphere(s, kR, x, u));
+  EXPECT_NEAR(x.y(), 0.2f + kR, kTol);
+  EXPECT_EQ(u, u0);
+}
+
+TEST(CollideSphere, NoContactLeavesParticleUnchanged) {
+  sph::Sphere s{Eigen::Vector3d(0.0, 0.0, 0.0), 0.2};
+  Vec3 x(0.0f, 0.0f, 0.2f + 1.5f * kR);
+  Vec3 u(0.0f, 0.0f, -3.0f);
+  const Vec3 x0 = x, u0 = u;
+  EXPECT_FALSE(sph::collideSphere(s, kR, x, u));
+  EXPECT_EQ(x, x0);
+  EXPECT_EQ(u, u0);
+}
+
+TEST(CollideCylinder, PushesOutInXzAndLeavesYAlone) {
+  sph::Cylinder cyl{0.3, 0.4, 0.05};
+  const Vec3 n = Vec3(0.6f, 0.0f, -0.8f);
+  Vec3 x(0.3f + 0.02f * n.x(), 0.77f, 0.4f + 0.02f * n.z());
+  Vec3 u = -1.0f * n + Vec3(0.0f, -0.9f, 0.0f) + 0.2f * Vec3(0.8f, 0.0f, 0.6f);
+  ASSERT_TRUE(sph::collideCylinder(cyl, kR, x, u));
+  EXPECT_NEAR(std::hypot(x.x() - 0.3f, x.z() - 0.4f), 0.05f + kR, kTol);
+  EXPECT_NEAR((x.x() - 0.3f) * n.x() + (x.z() - 0.4f) * n.z(), 0.05f + kR, kTol);
+  EXPECT_EQ(x.y(), 0.77f);
+  EXPECT_NEAR(u.dot(n), 0.0f, kTol);
+  EXPECT_NEAR(u.dot(Vec3(0.8f, 0.0f, 0.6f)), 0.2f, kTol);
+  EXPECT_EQ(u.y(), -0.9f);
+}
+
+TEST(CollideCylinder, KeepsOutwardVelocityAndIgnoresFarParticles) {
+  sph::Cylinder cyl{0.0, 0.0, 0.1};
+  Vec3 x(0.05f, 0.2f, 0.0f);
+  Vec3 u(0.5f, 0.0f, 0.1f);
+  const Vec3 u0 = u;
+  ASSERT_TRUE(sph::collideCylinder(cyl, kR, x, u));
+  EXPECT_NEAR(x.x(), 0.1f + kR, kTol);
+  EXPECT_EQ(u, u0);
+
+  Vec3 far(0.0f, 5.0f, -0.2f);
+  Vec3 uf(0.0f, 0.0f, 1.0f);
+  const Vec3 far0 = far, uf0 = uf;
+  EXPECT_FALSE(sph::collideCylinder(cyl, kR, far, uf));
+  EXPECT_EQ(far, far0);
+  EXPECT_EQ(uf, uf0);
+}
+
+sph::BoxState unitBox() {
+  sph::BoxState b;
+  b.min = Vec3(0.0f, 0.0f, 0.0f);
+  b.max = Vec3(1.0f, 0.5f, 0.8f);
+  return b;
+}
+
+TEST(CollideBox, ClampsInsideAndRemovesVelocityIntoWalls) {
+  const sph::BoxState b = unitBox();
+  Vec3 x(-0.05f, 0.6f, 0.4f);
+  Vec3 u(-1.0f, 2.0f, 0.3f);
+  ASSERT_TRUE(sph::collideBox(b, kR, x, u));
+  EXPECT_EQ(x.x(), 0.0f + kR);
+  EXPECT_EQ(x.y(), 0.5f - kR);
+  EXPECT_EQ(x.z(), 0.4f);
+  EXPECT_EQ(u.x(), 0.0f);
+  EXPECT_EQ(u.y(), 0.0f);
+  EXPECT_EQ(u.z(), 0.3f);
+}
+
+TEST(CollideBox, KeepsVelocityAwayFromWall) {
+  const sph::BoxState b = unitBox();
+  Vec3 x(0.5f, 0.25f, 0.805f);
+  Vec3 u(0.1f, 0.2f, -0.7f);
+  const Vec3 u0 = u;
+  ASSERT_TRUE(sph::collideBox(b, kR, x, u));
+  EXPECT_EQ(x.z(), 0.8f - kR);
+  EXPECT_EQ(u, u0);
+}
+
+TEST(CollideBox, MovingWallDragsParticleAlong) {
+  sph::BoxState b = unitBox();
+  b.min_velocity.x() = 0.5f;
+  Vec3 x(0.0f, 0.25f, 0.4f);
+  Vec3 u(0.1f, 0.0f, 0.0f);
+  ASSERT_TRUE(sph::collideBox(b, kR, x, u));
+  EXPECT_EQ(x.x(), kR);
+  EXPECT_EQ(u.x(), 0.5f);  // at least the wall velocity
+
+  Vec3 x2(0.0f, 0.25f, 0.4f);
+  Vec3 u2(0.9f, 0.0f, 0.0f);  // already faster than the wall
+  ASSERT_TRUE(sph::collideBox(b, kR, x2, u2));
+  EXPECT_EQ(u2.x(), 0.9f);
+}
+
+TEST(CollideBox, NoContactLeavesParticleUnchanged) {
+  const sph::BoxState b = unitBox();
+  Vec3 x(0.5f, 0.25f, 0.4f);
+  Vec3 u(-3.0f, -3.0f, 3.0f);
+  const Vec3 x0 = x, u0 = u;
+  EXPECT_FALSE(sph::collideBox(b, kR, x, u));
+  EXPECT_EQ(x, x0);
+  EXPECT_EQ(u, u0);
+}
+
+}  // namespace

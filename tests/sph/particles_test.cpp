@@ -1,0 +1,106 @@
+// ParticleSet storage: permute and compact move every attribute together; the capacity is a hard
+// ceiling; mass and class counts.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "sph/particles.h"
+
+namespace {
+
+using sph::SizeClass;
+using sph::Vec3;
+
+// n particles, alternating classes, every attribute set to a value derived from the particle's id.
+sph::ParticleSet makeSet(std::size_t n, std::size_t capacity) {
+  const auto classes = sph::thesisPreset().classes();
+  sph::ParticleSet p(capacity);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SizeClass c = (i % 3 == 0) ? SizeClass::Large : SizeClass::Small;
+    const float f = static_cast<float>(i);
+    p.add(Vec3(f, 2.0f * f, 3.0f * f), Vec3(-f, 0.5f * f, 7.0f), c, classes[sph::classIndex(c)]);
+    p.acceleration.back() = Vec3(f + 0.25f, f, -f);
+    p.density.back() = 1000.0f + f;
+    p.pressure.back() = 10.0f * f;
+    p.normal_length.back() = 0.125f * f;
+  }
+  return p;
+}
+
+// Every attribute of particle k matches the values makeSet gave the particle with id `id`.
+void expectParticleIs(const sph::ParticleSet& p, std::size_t k, std::uint32_t id) {
+  const auto classes = sph::thesisPreset().classes();
+  const float f = static_cast<float>(id);
+  const SizeClass c = (id % 3 == 0) ? SizeClass::Large : SizeClass::Small;
+  SCOPED_TRACE(::testing::Message() << "index " << k << ", id " << id);
+  EXPECT_EQ(p.id[k], id);
+  EXPECT_EQ(p.size_class[k], c);
+  EXPECT_EQ(p.mass[k], static_cast<float>(classes[sph::classIndex(c)].mass));
+  EXPECT_EQ(p.radius[k], static_cast<float>(classes[sph::classIndex(c)].radius));
+  EXPECT_EQ(p.support[k], static_cast<float>(classes[sph::classIndex(c)].support));
+  EXPECT_EQ(p.position[k], Vec3(f, 2.0f * f, 3.0f * f));
+  EXPECT_EQ(p.velocity[k], Vec3(-f, 0.5f * f, 7.0f));
+  EXPECT_EQ(p.acceleration[k], Vec3(f + 0.25f, f, -f));
+  EXPECT_EQ(p.density[k], 1000.0f + f);
+  EXPECT_EQ(p.pressure[k], 10.0f * f);
+  EXPECT_EQ(p.normal_length[k], 0.125f * f);
+}
+
+TEST(ParticleSet, AddAssignsSequentialIds) {
+  const sph::ParticleSet p = makeSet(10, 16);
+  ASSERT_EQ(p.size(), 10u);
+  for (std::size_t k = 0; k < p.size(); ++k) expectParticleIs(p, k, static_cast<std::uint32_t>(k));
+}
+
+TEST(ParticleSet, PermuteMovesEveryAttribute) {
+  sph::ParticleSet p = makeSet(7, 16);
+  const std::vector<std::uint32_t> order = {4, 0, 6, 2, 1, 5, 3};
+  p.permute(order);
+  ASSERT_EQ(p.size(), 7u);
+  for (std::size_t k = 0; k < order.size(); ++k) expectParticleIs(p, k, order[k]);
+  EXPECT_EQ(p.capacity(), 16u);
+
+  const std::vector<std::uint32_t> wrong_size = {0, 1};
+  EXPECT_THROW(p.permute(wrong_size), std::invalid_argument);
+}
+
+TEST(ParticleSet, CompactKeepsFlaggedInOrder) {
+  sph::ParticleSet p = makeSet(8, 16);
+  const std::vector<std::uint8_t> keep = {1, 0, 0, 1, 1, 0, 1, 0};
+  EXPECT_EQ(p.compact(keep), 4u);
+  ASSERT_EQ(p.size(), 4u);
+  const std::uint32_t kept[] = {0, 3, 4, 6};
+  for (std::size_t k = 0; k < 4; ++k) expectParticleIs(p, k, kept[k]);
+  p.forEachAttribute([&](const auto& v) { EXPECT_EQ(v.size(), 4u); });
+
+  // New particles after a compaction get fresh ids, never reused ones.
+  const auto classes = sph::thesisPreset().classes();
+  EXPECT_EQ(p.add(Vec3::Zero(), Vec3::Zero(), SizeClass::Small, classes[0]), 8u);
+}
+
+TEST(ParticleSet, AddPastCapacityThrows) {
+  sph::ParticleSet p = makeSet(5, 5);
+  const auto classes = sph::thesisPreset().classes();
+  EXPECT_THROW(p.add(Vec3::Zero(), Vec3::Zero(), SizeClass::Small, classes[0]), std::length_error);
+  EXPECT_EQ(p.size(), 5u);
+  p.forEachAttribute([&](const auto& v) { EXPECT_EQ(v.size(), 5u); });
+}
+
+TEST(ParticleSet, TotalMassAndClassCounts) {
+  const sph::ParticleSet p = makeSet(10, 16);  // ids 0, 3, 6, 9 LARGE
+  const auto classes = sph::thesisPreset().classes();
+  EXPECT_EQ(p.countOf(SizeClass::Large), 4u);
+  EXPECT_EQ(p.countOf(SizeClass::Small), 6u);
+  const double expected = 4.0 * static_cast<float>(classes[1].mass) + 6.0 * static_cast<float>(classes[0].mass);
+  EXPECT_DOUBLE_EQ(p.totalMass(), expected);
+  EXPECT_NEAR(p.totalMass(), 4 * 0.02 + 6 * 0.01, 1e-8);
+
+  sph::ParticleSet empty(4);
+  EXPECT_TRUE(empty.empty());
+  EXPECT_EQ(empty.totalMass(), 0.0);
+  EXPECT_EQ(empty.countOf(SizeClass::Small), 0u);
+}
+
+}  // namespace
