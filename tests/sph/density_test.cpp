@@ -59,4 +59,33 @@ TEST(Density, LargeLatticeCentreNearRestDensity) {
   EXPECT_NEAR(dev, -0.037, 0.01);  // about -3.7 %
 }
 
+// A SMALL and a LARGE particle closer than both supports: each sees the other through the average
+// of the two kernels, eq. (3.35), and itself through its own kernel.
+TEST(Density, MixedPairUsesAveragedKernel) {
+  const sph::SimParams params = sph::thesisPreset();
+  const auto classes = params.classes();
+  const sph::KernelTable kernels = sph::makeKernelTable(params);
+  sph::ParticleSet particles(2);
+  const float d = 0.5f * static_cast<float>(std::min(classes[0].support, classes[1].support));
+  particles.add(sph::Vec3(0.1f, 0.1f, 0.1f), sph::Vec3::Zero(), sph::SizeClass::Small, classes[0]);
+  particles.add(sph::Vec3(0.1f + d, 0.1f, 0.1f), sph::Vec3::Zero(), sph::SizeClass::Large, classes[1]);
+  sph::Aabb bounds;
+  bounds.max = Eigen::Vector3d::Constant(0.3);
+  sph::NeighborGrid grid;
+  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), 2);
+  grid.build(particles);
+  ASSERT_EQ(grid.neighborCount(0), 1u);
+  ASSERT_EQ(grid.neighborCount(1), 1u);
+  sph::computeDensityPressure(params, kernels, grid, particles);
+
+  const double r2 = (particles.position[0] - particles.position[1]).squaredNorm();
+  const double w_pair = 0.5 * (sph::poly6(kernels[0], static_cast<float>(r2)) +
+                               sph::poly6(kernels[1], static_cast<float>(r2)));
+  for (int i = 0; i < 2; ++i) {
+    const int j = 1 - i;
+    const double expected = particles.mass[i] * sph::poly6(kernels[i], 0.0f) + particles.mass[j] * w_pair;
+    EXPECT_NEAR(particles.density[i], expected, 1e-5 * expected) << "particle " << i;
+  }
+}
+
 }  // namespace
