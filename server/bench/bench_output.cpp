@@ -72,6 +72,7 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["mean_large"] = s.mean_large;
   j["mean_small"] = s.mean_small;
   j["mean_neighbors_per_particle"] = s.mean_neighbors;
+  j["neighbor_list_stride"] = run.neighbor_stride;
   j["mean_density_over_rho0"] = s.mean_density_ratio;
   j["max_density_over_rho0"] = s.max_density_ratio;
   j["total_mass_start"] = run.mass_start;

@@ -70,6 +70,7 @@ RunResult runScene(const sph::Scene& scene, const std::string& method, const Run
     if (options.on_frame) options.on_frame(sim, result.records.back());
   }
   result.mass_end = sim.particles().totalMass();
+  result.neighbor_stride = sim.grid().stride();
   return result;
 }
 

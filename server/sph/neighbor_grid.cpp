@@ -83,7 +83,8 @@ void NeighborGrid::build(const ParticleSet& particles) {
       const std::uint32_t count = gatherNeighbors(particles, i);
       max_count = std::max(max_count, count);
     }
-    if (max_count <= stride_) break;
+    // The last slot is scratch for the branch-free writes, so a full list must stay below it.
+    if (max_count < stride_) break;
     // Rare: compression pushed some particle past the stride. Grow with headroom and redo.
     stride_ = static_cast<std::size_t>(max_count) + max_count / 2;
     ++stride_growths_;
@@ -102,6 +103,7 @@ std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::s
   const int x1 = std::min(cx + R, dims_[0] - 1);
 
   std::uint32_t* out = neighbor_index_.data() + i * stride_;
+  const std::uint32_t last_slot = static_cast<std::uint32_t>(stride_ - 1);
   std::uint32_t count = 0;
   for (int z = std::max(cz - R, 0); z <= std::min(cz + R, dims_[2] - 1); ++z) {
     for (int y = std::max(cy - R, 0); y <= std::min(cy + R, dims_[1] - 1); ++y) {
@@ -115,12 +117,12 @@ std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::s
         const float dy = q.y() - pi.y();
         const float dz = q.z() - pi.z();
         const float reach = 0.5f * (hi + q.w());  // eq. (3.34)
-        if (dx * dx + dy * dy + dz * dz <= reach * reach) {
-          const std::uint32_t j = cell_particles_[k];
-          if (j == i) continue;
-          if (count < stride_) out[count] = j;
-          ++count;
-        }
+        const std::uint32_t j = cell_particles_[k];
+        // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so
+        // a branch here mispredicts often. Write always, advance the cursor only on acceptance.
+        const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != i);
+        out[std::min<std::uint32_t>(count, last_slot)] = j;
+        count += accept;
       }
     }
   }
