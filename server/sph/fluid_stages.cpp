@@ -31,8 +31,11 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
       }
       rho += p.mass[j] * w;  // eq. (3.11)
     }
+    const float pressure = k * (rho - rho0);  // eq. (3.12)
     p.density[i] = rho;
-    p.pressure[i] = k * (rho - rho0);  // eq. (3.12)
+    p.pressure[i] = pressure;
+    p.pressure_term[i] = pressure / (rho * rho);
+    p.volume[i] = p.mass[i] / rho;
   }
 }
 
@@ -52,13 +55,13 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     const Vec3 xi = p.position[i];
     const Vec3 ui = p.velocity[i];
     const float rhoi = p.density[i];
-    const float pi_over_rho2 = p.pressure[i] / (rhoi * rhoi);
+    const float pi_over_rho2 = p.pressure_term[i];
 
     Vec3 pressure_acc = Vec3::Zero();   // f_pressure / rho_i
     Vec3 viscous = Vec3::Zero();        // f_viscosity / mu
     Vec3 normal = Vec3::Zero();         // n = grad c, eq. (3.17)
     // The colour field sums over every j including i (3.16); only the Laplacian has a self term.
-    float colour_laplacian = p.mass[i] / rhoi * poly6Laplacian(ki, 0.0f);
+    float colour_laplacian = p.volume[i] * poly6Laplacian(ki, 0.0f);
 
     for (std::uint32_t j : grid.neighbors(i)) {
       const Vec3 r = xi - p.position[j];
@@ -77,11 +80,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
         cgrad = 0.5f * (cgrad + poly6GradFactor(kj, r2));
         clap = 0.5f * (clap + poly6Laplacian(kj, r2));
       }
-      const float mj = p.mass[j];
-      const float rhoj = p.density[j];
-      const float volj = mj / rhoj;
+      const float volj = p.volume[j];
       // Pressure, eq. (3.13) divided by rho_i: symmetric in i and j, so momentum is conserved.
-      pressure_acc -= (mj * (pi_over_rho2 + p.pressure[j] / (rhoj * rhoj)) * spiky) * r;
+      pressure_acc -= (p.mass[j] * (pi_over_rho2 + p.pressure_term[j]) * spiky) * r;
       // Viscosity, eq. (3.14).
       viscous += (volj * visc) * (p.velocity[j] - ui);
       // Colour field gradient and Laplacian, eqs. (3.16)-(3.18).

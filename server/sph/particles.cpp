@@ -26,6 +26,8 @@ std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const 
   density.push_back(0.0f);
   pressure.push_back(0.0f);
   normal_length.push_back(0.0f);
+  pressure_term.push_back(0.0f);
+  volume.push_back(0.0f);
   return new_id;
 }
 

@@ -53,11 +53,14 @@ class ParticleSet {
   std::vector<float> density;           // eq. (3.11)
   std::vector<float> pressure;          // eq. (3.12)
   std::vector<float> normal_length;     // |n| of the colour field gradient, eq. (3.17)
+  // Per-particle factors of the pair sums, set with the density so the force loop divides less:
+  std::vector<float> pressure_term;     // p / rho^2, eq. (3.13)
+  std::vector<float> volume;            // m / rho, eqs. (3.14), (3.16)
 
   template <typename F>
   void forEachAttribute(F&& f) {
     f(id); f(size_class); f(mass); f(radius); f(support); f(position); f(velocity);
-    f(acceleration); f(density); f(pressure); f(normal_length);
+    f(acceleration); f(density); f(pressure); f(normal_length); f(pressure_term); f(volume);
   }
 
  private:

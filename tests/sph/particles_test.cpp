@@ -25,6 +25,8 @@ sph::ParticleSet makeSet(std::size_t n, std::size_t capacity) {
     p.density.back() = 1000.0f + f;
     p.pressure.back() = 10.0f * f;
     p.normal_length.back() = 0.125f * f;
+    p.pressure_term.back() = 0.5f * f;
+    p.volume.back() = 2.0f + f;
   }
   return p;
 }
@@ -46,6 +48,8 @@ void expectParticleIs(const sph::ParticleSet& p, std::size_t k, std::uint32_t id
   EXPECT_EQ(p.density[k], 1000.0f + f);
   EXPECT_EQ(p.pressure[k], 10.0f * f);
   EXPECT_EQ(p.normal_length[k], 0.125f * f);
+  EXPECT_EQ(p.pressure_term[k], 0.5f * f);
+  EXPECT_EQ(p.volume[k], 2.0f + f);
 }
 
 TEST(ParticleSet, AddAssignsSequentialIds) {
