@@ -56,12 +56,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> methods = splitList(method_arg);
     if (scenes.empty()) throw std::invalid_argument("no scene named (--scene)");
     if (methods.empty()) throw std::invalid_argument("no method named (--method)");
-    for (const auto& m : methods) {
-      const auto& known = bench::knownMethods();
-      if (std::find(known.begin(), known.end(), m) == known.end()) {
-        throw std::invalid_argument("unknown method '" + m + "' (known: regular)");
-      }
-    }
+    for (const auto& m : methods) bench::requireKnownMethod(m);
     // Load every scene before running any, so a typo fails fast and writes nothing.
     std::vector<sph::Scene> loaded;
     for (const auto& s : scenes) loaded.push_back(scene::loadScene(s, scene_dir));

@@ -1,5 +1,6 @@
 #include "bench/bench_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <omp.h>
 #include <stdexcept>
@@ -9,6 +10,14 @@ namespace bench {
 const std::vector<std::string>& knownMethods() {
   static const std::vector<std::string> methods = {"regular"};
   return methods;
+}
+
+void requireKnownMethod(const std::string& method) {
+  const auto& known = knownMethods();
+  if (std::find(known.begin(), known.end(), method) != known.end()) return;
+  std::string list;
+  for (const auto& m : known) list += (list.empty() ? "" : ", ") + m;
+  throw std::invalid_argument("unknown method '" + method + "' (known: " + list + ")");
 }
 
 void measureState(const sph::Simulation& sim, FrameRecord& r) {
@@ -44,9 +53,7 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
 }
 
 RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options) {
-  if (method != "regular") {
-    throw std::invalid_argument("unknown method '" + method + "' (known: regular)");
-  }
+  requireKnownMethod(method);
   if (options.threads < 1) throw std::invalid_argument("threads must be >= 1");
   omp_set_num_threads(options.threads);
 

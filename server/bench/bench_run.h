@@ -45,6 +45,8 @@ struct RunOptions {
 
 // Methods this build knows; `regular` is all SMALL with no adaptive step.
 const std::vector<std::string>& knownMethods();
+// Throws std::invalid_argument naming the known methods when `method` is not one of them.
+void requireKnownMethod(const std::string& method);
 
 RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options);
 

@@ -13,7 +13,7 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   }
   cell_size_ = cell_size / kCellsPerSupport;
   inv_cell_size_ = 1.0f / cell_size_;
-  // One spare cell on each side: particles touching the walls still have a full 3x3x3 block.
+  // One spare cell on each side of the container; the search block is clamped to the grid.
   origin_ = bounds.min.cast<float>() - Eigen::Vector3f::Constant(cell_size_);
   std::size_t cells = 1;
   for (int a = 0; a < 3; ++a) {
