@@ -7,6 +7,9 @@ packages=(
   libzmq3-dev cppzmq-dev libprotobuf-dev protobuf-compiler
   libspdlog-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libmsgpack-cxx-dev
+  libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth
+  gnuplot-nox python3-zmq python3-protobuf
 )
 missing=()
 for p in "${packages[@]}"; do
