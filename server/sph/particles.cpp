@@ -31,6 +31,24 @@ std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const 
   return new_id;
 }
 
+std::size_t ParticleSet::appendZeroed(std::size_t n) {
+  const std::size_t first = size();
+  if (first + n > capacity_) {
+    throw std::length_error("particle capacity " + std::to_string(capacity_) + " exceeded");
+  }
+  forEachAttribute([&](auto& v) {
+    using Value = typename std::remove_reference_t<decltype(v)>::value_type;
+    // Eigen's default constructor leaves vectors uninitialised: say zero explicitly.
+    if constexpr (std::is_same_v<Value, Vec3>) {
+      v.resize(first + n, Vec3::Zero());
+    } else {
+      v.resize(first + n, Value{});
+    }
+  });
+  for (std::size_t k = first; k < first + n; ++k) id[k] = next_id_++;
+  return first;
+}
+
 void ParticleSet::clear() {
   forEachAttribute([](auto& v) { v.clear(); });
   next_id_ = 0;

@@ -30,6 +30,10 @@ class ParticleSet {
   std::uint32_t add(const Vec3& position, const Vec3& velocity, SizeClass size_class,
                     const SizeClassProps& props);
   void clear();
+  // Appends `n` particles with fresh ids and every other attribute zeroed, for the caller to fill
+  // (the adaptive step's split children). Returns the index of the first. Throws std::length_error
+  // past the capacity.
+  std::size_t appendZeroed(std::size_t n);
 
   // Reorders every attribute so that new index k holds old index order[k].
   void permute(std::span<const std::uint32_t> order);

@@ -1,0 +1,106 @@
+#include "sph/adaptive/adaptive_controller.h"
+
+#include <stdexcept>
+
+#include "sph/adaptive/decide.h"
+#include "sph/adaptive/split_merge.h"
+
+namespace sph {
+
+namespace {
+
+void requireAdaptive(Method method) {
+  if (method == Method::Regular) {
+    throw std::invalid_argument("the regular method has no adaptive step");
+  }
+}
+
+void requireTwoToOneMasses(const SimParams& params) {
+  // Split and merge trade one LARGE for two SMALL: exact mass conservation needs m_L = 2 m_S in
+  // the float the particles store.
+  const float small = static_cast<float>(params.mass_small);
+  const float large = static_cast<float>(params.mass_large);
+  if (large != 2.0f * small) {
+    throw std::invalid_argument(
+        "adaptive methods need mass_large = 2 * mass_small (split and merge trade one LARGE for "
+        "two SMALL)");
+  }
+}
+
+}  // namespace
+
+AdaptiveController::AdaptiveController(Method method, const AdaptiveConfig& config,
+                                       const ScreenCamera& camera)
+    : method_(method), config_(config), camera_(camera) {
+  requireAdaptive(method);
+  config_.validate();
+  if (!isUsable(camera_)) throw std::invalid_argument("adaptive controller: unusable camera");
+}
+
+void AdaptiveController::setCamera(const ScreenCamera& camera) {
+  if (!isUsable(camera)) throw std::invalid_argument("unusable camera (non-finite or empty viewport)");
+  camera_ = camera;
+}
+
+void AdaptiveController::setConfig(const AdaptiveConfig& config) {
+  config.validate();
+  config_ = config;
+}
+
+void AdaptiveController::setMethod(Method method) {
+  requireAdaptive(method);
+  method_ = method;
+}
+
+GazeMode AdaptiveController::gazeMode() const {
+  if (method_ == Method::Surface) return GazeMode::None;
+  if (!gaze_.present || !(gaze_.age_s <= config_.gaze_hold_s)) return GazeMode::Fallback;
+  return gaze_.age_s <= config_.gaze_stale_s ? GazeMode::Tracking : GazeMode::Holding;
+}
+
+void AdaptiveController::apply(Simulation& sim) {
+  requireTwoToOneMasses(sim.params());
+  const ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  decision_.resize(n);
+  partner_.resize(n);
+
+  const GazeMode mode = gazeMode();
+  const bool use_gaze = mode == GazeMode::Tracking || mode == GazeMode::Holding;
+  const bool use_surface = method_ == Method::Surface || method_ == Method::Hybrid || !use_gaze;
+  if (use_surface) {
+    decideBySurface(sim, config_, surface_distance_, surface_distance_next_, decision_);
+  }
+  if (use_gaze) {
+    if (method_ == Method::Hybrid) {
+      gaze_decision_.resize(n);
+      decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, gaze_decision_);
+      combineHybrid(gaze_decision_, decision_);
+    } else {
+      decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, decision_);
+    }
+  }
+
+  stats_ = AdaptiveStats{};
+  for (std::size_t i = 0; i < n; ++i) {
+    stats_.split_wanted += decision_[i] == kSplit && p.size_class[i] == SizeClass::Large;
+    stats_.merge_wanted += decision_[i] == kMerge && p.size_class[i] == SizeClass::Small;
+  }
+  choosePartners(p, sim.grid(), decision_, partner_);
+  const SplitMergeCounts counts = applySplitMerge(sim, decision_, partner_, keep_, split_slot_);
+  stats_.splits = counts.splits;
+  stats_.merges = counts.merges;
+  stats_.gaze_mode = mode;
+  stats_.gaze_x = gaze_.x;
+  stats_.gaze_y = gaze_.y;
+  stats_.gaze_age_s = gaze_.age_s;
+}
+
+std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method,
+                                                           const AdaptiveConfig& config,
+                                                           const ScreenCamera& camera) {
+  if (method == Method::Regular) return nullptr;
+  return std::make_unique<AdaptiveController>(method, config, camera);
+}
+
+}  // namespace sph

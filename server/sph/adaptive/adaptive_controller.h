@@ -1,0 +1,70 @@
+// The adaptive step of the surface, gaze and hybrid methods (thesis 3.6): a parallel pass decides
+// SPLIT / MERGE / REMAIN per particle, then split (3.37)-(3.39) and merge (3.40)-(3.43) are applied
+// and the arrays compacted. Install it with Simulation::setAdaptiveStep; keep a raw pointer to feed
+// it gaze and camera between steps.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "sph/adaptive/method.h"
+#include "sph/camera.h"
+#include "sph/simulation.h"
+
+namespace sph {
+
+struct AdaptiveStats {
+  int splits = 0;          // LARGE particles split this step
+  int merges = 0;          // SMALL pairs merged this step
+  int split_wanted = 0;    // particles whose decision was SPLIT (including ones with no room)
+  int merge_wanted = 0;    // particles whose decision was MERGE (including unpaired ones)
+  GazeMode gaze_mode = GazeMode::None;
+  double gaze_x = 0.5;     // the gaze point the step used (normalized, origin top left)
+  double gaze_y = 0.5;
+  double gaze_age_s = 0.0;
+};
+
+class AdaptiveController : public AdaptiveStep {
+ public:
+  // `method` must not be Method::Regular (it has no adaptive step). Throws std::invalid_argument
+  // for that, for an invalid config, and (in apply) when m_LARGE is not exactly 2 m_SMALL.
+  AdaptiveController(Method method, const AdaptiveConfig& config, const ScreenCamera& camera);
+
+  void setGaze(const GazeInput& gaze) { gaze_ = gaze; }
+  void setCamera(const ScreenCamera& camera);
+  void setConfig(const AdaptiveConfig& config);
+  void setMethod(Method method);
+
+  Method method() const { return method_; }
+  const AdaptiveConfig& config() const { return config_; }
+  const ScreenCamera& camera() const { return camera_; }
+  const GazeInput& gaze() const { return gaze_; }
+  const AdaptiveStats& lastStats() const { return stats_; }
+
+  void apply(Simulation& sim) override;
+
+ private:
+  Method method_;
+  AdaptiveConfig config_;
+  ScreenCamera camera_;
+  GazeInput gaze_;
+  AdaptiveStats stats_;
+  // Scratch, sized once to the particle capacity (no allocation inside a step after the first).
+  GazeMode gazeMode() const;
+
+  std::vector<std::int8_t> decision_;
+  std::vector<std::int8_t> gaze_decision_;
+  std::vector<float> surface_distance_;
+  std::vector<float> surface_distance_next_;
+  std::vector<std::int32_t> partner_;
+  std::vector<std::uint8_t> keep_;
+  std::vector<std::uint32_t> split_slot_;
+};
+
+// nullptr for Method::Regular.
+std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method,
+                                                           const AdaptiveConfig& config,
+                                                           const ScreenCamera& camera);
+
+}  // namespace sph

@@ -1,0 +1,34 @@
+// The decision pass of the adaptive step: one SPLIT / MERGE / REMAIN flag per particle, computed in
+// parallel, each particle writing only its own flag (so the result does not depend on the thread
+// count).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "sph/adaptive/method.h"
+#include "sph/camera.h"
+#include "sph/simulation.h"
+
+namespace sph {
+
+enum Decision : std::int8_t { kRemain = 0, kSplit = 1, kMerge = 2 };
+
+// Surface based, eqs. (3.44)-(3.46): the character field from the distance to the surface (or a
+// boundary), the pressure and the neighbour count. Uses the neighbour lists and |n| of the step
+// that just ran. `distance` and `scratch` are resized to the particle count.
+void decideBySurface(const Simulation& sim, const AdaptiveConfig& config,
+                     std::vector<float>& distance, std::vector<float>& scratch,
+                     std::span<std::int8_t> out);
+
+// Eye-tracking based, eqs. (3.47)-(3.48), with a hysteresis ring: SPLIT where the projected particle
+// overlaps the gaze circle, MERGE where it lies wholly outside the ring (or behind the eye), REMAIN
+// in the ring.
+void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
+                  double gaze_y, const AdaptiveConfig& config, std::span<std::int8_t> out);
+
+// Hybrid: SPLIT only where both ask for it, MERGE where either does, else REMAIN.
+void combineHybrid(std::span<const std::int8_t> gaze, std::span<std::int8_t> surface_in_out);
+
+}  // namespace sph

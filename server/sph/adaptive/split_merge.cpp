@@ -1,0 +1,181 @@
+#include "sph/adaptive/split_merge.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sph/adaptive/decide.h"
+#include "sph/collision.h"
+
+namespace sph {
+
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// Largest t such that centre +- t * dir both lie inside the box shrunk by `margin` (the child
+// radius), capped at `wanted`. The parent already sits inside the box shrunk by its own, larger
+// radius, so t > 0 always.
+float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin,
+                     float wanted) {
+  float t = wanted;
+  for (int a = 0; a < 3; ++a) {
+    const float d = std::abs(dir[a]);
+    if (d < 1e-6f) continue;
+    const float room = std::min(centre[a] - (box.min[a] + margin), (box.max[a] - margin) - centre[a]);
+    t = std::min(t, std::max(room, 0.0f) / d);
+  }
+  return t;
+}
+
+// Obstacles may sit where a child lands: push the child out as the step's collision would, without
+// touching its velocity (split keeps velocities, eq. 3.39).
+void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float radius, Vec3& x) {
+  Vec3 unused_velocity = Vec3::Zero();
+  for (const Sphere& s : boundary.spheres) collideSphere(s, radius, x, unused_velocity);
+  for (const Cylinder& c : boundary.cylinders) collideCylinder(c, radius, x, unused_velocity);
+  collideBox(box, radius, x, unused_velocity);
+}
+
+}  // namespace
+
+Vec3 splitDirection(std::uint32_t id) {
+  const std::uint64_t h = splitmix64(id);
+  // Two 24-bit uniforms -> a point on the unit sphere (Archimedes: z uniform in [-1, 1]).
+  const float u1 = static_cast<float>(h & 0xFFFFFFu) / 16777216.0f;
+  const float u2 = static_cast<float>((h >> 24) & 0xFFFFFFu) / 16777216.0f;
+  const float z = 1.0f - 2.0f * u1;
+  const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 6.2831853f * u2;
+  return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
+void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
+                    std::span<const std::int8_t> decision, std::span<std::int32_t> partner) {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int32_t best = -1;
+    if (decision[i] == kMerge && p.size_class[i] == SizeClass::Small) {
+      float best_d2 = std::numeric_limits<float>::infinity();
+      std::uint32_t best_id = 0;
+      const Vec3 xi = p.position[i];
+      // Candidates from the neighbour lists, i.e. within (hi + hj) / 2, eq. (3.34).
+      for (std::uint32_t j : grid.neighbors(i)) {
+        if (decision[j] != kMerge || p.size_class[j] != SizeClass::Small) continue;
+        const float d2 = (xi - p.position[j]).squaredNorm();
+        if (d2 < best_d2 || (d2 == best_d2 && p.id[j] < best_id)) {
+          best_d2 = d2;
+          best_id = p.id[j];
+          best = static_cast<std::int32_t>(j);
+        }
+      }
+    }
+    partner[i] = best;
+  }
+}
+
+SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
+                                 std::span<const std::int32_t> partner,
+                                 std::vector<std::uint8_t>& keep,
+                                 std::vector<std::uint32_t>& split_slot) {
+  ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  const auto props = sim.params().classes();
+  const SizeClassProps& small = props[classIndex(SizeClass::Small)];
+  const SizeClassProps& large = props[classIndex(SizeClass::Large)];
+  const BoxState box = sim.boxNow();
+  const Boundary& boundary = sim.scene().boundary;
+  SplitMergeCounts counts;
+
+  // Slots for the second children: a serial prefix count keeps them in index order, so the layout
+  // (and every later sum) is the same for any thread count.
+  split_slot.resize(n);
+  std::uint32_t splits = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    split_slot[i] = splits;
+    splits += (decision[i] == kSplit && p.size_class[i] == SizeClass::Large);
+  }
+  const std::size_t first_child = p.appendZeroed(splits);
+  counts.splits = static_cast<int>(splits);
+
+  const float small_mass = static_cast<float>(small.mass);
+  const float small_radius = static_cast<float>(small.radius);
+  const float small_support = static_cast<float>(small.support);
+  const float large_mass = static_cast<float>(large.mass);
+  const float large_radius = static_cast<float>(large.radius);
+  const float large_support = static_cast<float>(large.support);
+
+  // Split, eqs. (3.37)-(3.39): m/2, r = cbrt(r^3 / 2) (the SMALL radius), velocity kept; the
+  // children sit at +- half the parent radius along the split direction, so the centre of mass
+  // stays put and the pair spacing is close to the SMALL lattice spacing.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (decision[i] != kSplit || p.size_class[i] != SizeClass::Large) continue;
+    const std::size_t c = first_child + split_slot[i];
+    const Vec3 centre = p.position[i];
+    const Vec3 dir = splitDirection(p.id[i]);
+    const float reach = symmetricReach(centre, dir, box, small_radius, 0.5f * p.radius[i]);
+    Vec3 a = centre + reach * dir;
+    Vec3 b = centre - reach * dir;
+    keepOutOfObstacles(boundary, box, small_radius, a);
+    keepOutOfObstacles(boundary, box, small_radius, b);
+    // The second child copies the parent, then both take the SMALL class.
+    p.size_class[c] = SizeClass::Small;
+    p.velocity[c] = p.velocity[i];
+    p.acceleration[c] = p.acceleration[i];
+    p.density[c] = p.density[i];
+    p.pressure[c] = p.pressure[i];
+    p.normal_length[c] = p.normal_length[i];
+    p.pressure_term[c] = p.pressure_term[i];
+    for (std::size_t k : {i, c}) {
+      p.size_class[k] = SizeClass::Small;
+      p.mass[k] = small_mass;
+      p.radius[k] = small_radius;
+      p.support[k] = small_support;
+      p.volume[k] = p.density[k] > 0.0f ? small_mass / p.density[k] : 0.0f;
+    }
+    p.position[i] = a;
+    p.position[c] = b;
+  }
+
+  // Merge, eqs. (3.40)-(3.43): mass summed, position and velocity averaged (equal masses, so the
+  // momentum m_i u_i + m_j u_j is kept). The lower index of each mutual pair survives.
+  keep.assign(p.size(), 1);
+  int merges = 0;
+#pragma omp parallel for schedule(static) reduction(+ : merges)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t j = partner[i];
+    if (j < 0 || static_cast<std::size_t>(j) <= i || partner[static_cast<std::size_t>(j)] !=
+                                                         static_cast<std::int32_t>(i)) {
+      continue;
+    }
+    const auto k = static_cast<std::size_t>(j);
+    Vec3 x = 0.5f * (p.position[i] + p.position[k]);
+    keepOutOfObstacles(boundary, box, large_radius, x);
+    p.position[i] = x;
+    p.velocity[i] = 0.5f * (p.velocity[i] + p.velocity[k]);
+    p.acceleration[i] = 0.5f * (p.acceleration[i] + p.acceleration[k]);
+    p.density[i] = 0.5f * (p.density[i] + p.density[k]);
+    p.pressure[i] = 0.5f * (p.pressure[i] + p.pressure[k]);
+    p.normal_length[i] = std::max(p.normal_length[i], p.normal_length[k]);
+    p.pressure_term[i] = 0.5f * (p.pressure_term[i] + p.pressure_term[k]);
+    p.size_class[i] = SizeClass::Large;
+    p.mass[i] = large_mass;
+    p.radius[i] = large_radius;
+    p.support[i] = large_support;
+    p.volume[i] = p.density[i] > 0.0f ? large_mass / p.density[i] : 0.0f;
+    keep[k] = 0;
+    ++merges;
+  }
+  counts.merges = merges;
+  if (merges > 0) p.compact(keep);
+  return counts;
+}
+
+}  // namespace sph

@@ -1,0 +1,38 @@
+// Applying the decisions: split (3.37)-(3.39), merge (3.40)-(3.43), then one compact that moves
+// every attribute. Mass is conserved exactly: a LARGE particle's mass is exactly twice a SMALL one's
+// (checked when the controller is made), and split and merge only ever trade one for two.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "sph/simulation.h"
+
+namespace sph {
+
+// For each SMALL particle flagged MERGE, its nearest SMALL neighbour also flagged MERGE (ties to the
+// lower id), or -1. Pairs are the mutual choices: partner[i] == j and partner[j] == i. Each particle
+// writes only its own entry, so no particle can be claimed by two pairs and the choice does not
+// depend on the thread count.
+void choosePartners(const ParticleSet& particles, const NeighborGrid& grid,
+                    std::span<const std::int8_t> decision, std::span<std::int32_t> partner);
+
+struct SplitMergeCounts {
+  int splits = 0;
+  int merges = 0;
+};
+
+// Splits every LARGE particle flagged SPLIT into two SMALL children placed symmetrically about its
+// centre, along a direction drawn from its id (deterministic, never the same point), and merges
+// every mutual pair into a LARGE particle at the pair's midpoint with the mean velocity. Children
+// and merged particles stay inside the box with their radius. `keep` is scratch.
+SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
+                                 std::span<const std::int32_t> partner,
+                                 std::vector<std::uint8_t>& keep,
+                                 std::vector<std::uint32_t>& split_slot);
+
+// Unit vector drawn from a particle id (splitmix64), the axis a split places its children along.
+Vec3 splitDirection(std::uint32_t id);
+
+}  // namespace sph

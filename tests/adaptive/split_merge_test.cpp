@@ -1,0 +1,157 @@
+// Split (3.37)-(3.39) and merge (3.40)-(3.43) on their own: mass, momentum, placement, pairing.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <vector>
+
+#include "adaptive_test_util.h"
+#include "sph/adaptive/decide.h"
+#include "sph/adaptive/split_merge.h"
+#include "sph/fluid_stages.h"
+
+namespace {
+
+using adaptive_test::momentum;
+using adaptive_test::poolScene;
+
+// Runs one step so that neighbour lists, densities and normals exist, then gives every particle
+// some velocity so momentum is not trivially zero.
+void prepare(sph::Simulation& sim) {
+  sim.step();
+  sph::ParticleSet& p = sim.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.velocity[i] = sph::Vec3(0.1f * std::sin(0.37f * i), 0.2f * std::cos(0.11f * i), 0.05f);
+  }
+}
+
+TEST(SplitMerge, SplitKeepsMassMomentumAndCentreOfMass) {
+  sph::Simulation sim(poolScene(0.4, 0.4, 600), sph::SizeClass::Large);
+  prepare(sim);
+  sph::ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  const double mass_before = p.totalMass();
+  const Eigen::Vector3d momentum_before = momentum(p);
+  Eigen::Vector3d centre_before = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) centre_before += p.mass[i] * p.position[i].cast<double>();
+
+  std::vector<std::int8_t> decision(n, sph::kSplit);
+  std::vector<std::int32_t> partner(n, -1);
+  std::vector<std::uint8_t> keep;
+  std::vector<std::uint32_t> slots;
+  const auto counts = sph::applySplitMerge(sim, decision, partner, keep, slots);
+
+  EXPECT_EQ(counts.splits, static_cast<int>(n));
+  EXPECT_EQ(counts.merges, 0);
+  ASSERT_EQ(p.size(), 2 * n);
+  EXPECT_EQ(p.countOf(sph::SizeClass::Small), 2 * n);
+  EXPECT_EQ(p.totalMass(), mass_before);
+  EXPECT_LT((momentum(p) - momentum_before).norm(), 1e-9 * (1.0 + momentum_before.norm()));
+  Eigen::Vector3d centre_after = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < p.size(); ++i) centre_after += p.mass[i] * p.position[i].cast<double>();
+  // Children are symmetric about the parent except where an obstacle pushed one: none here.
+  EXPECT_LT((centre_after - centre_before).norm() / mass_before, 1e-6);
+
+  std::set<std::uint32_t> ids(p.id.begin(), p.id.end());
+  EXPECT_EQ(ids.size(), p.size()) << "ids must stay unique";
+  const sph::BoxState box = sim.boxNow();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_GE(p.position[i][a], box.min[a] + p.radius[i] - 1e-6f);
+      EXPECT_LE(p.position[i][a], box.max[a] - p.radius[i] + 1e-6f);
+    }
+  }
+  // The two children of parent i (slot i and slot n + i) never share a point.
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_GT((p.position[i] - p.position[n + i]).norm(), 1e-4f);
+  }
+}
+
+TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
+  sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::SizeClass::Small);
+  prepare(sim);
+  sph::ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  const double mass_before = p.totalMass();
+  const Eigen::Vector3d momentum_before = momentum(p);
+
+  std::vector<std::int8_t> decision(n, sph::kMerge);
+  std::vector<std::int32_t> partner(n, -1);
+  sph::choosePartners(p, sim.grid(), decision, partner);
+  // Every particle is in at most one mutual pair.
+  std::vector<int> pair_count(n, 0);
+  int pairs = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t j = partner[i];
+    if (j >= 0 && partner[static_cast<std::size_t>(j)] == static_cast<std::int32_t>(i) &&
+        static_cast<std::size_t>(j) > i) {
+      ++pair_count[i];
+      ++pair_count[static_cast<std::size_t>(j)];
+      ++pairs;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) ASSERT_LE(pair_count[i], 1) << "particle " << i;
+  ASSERT_GT(pairs, static_cast<int>(n / 4)) << "mutual nearest pairs should cover much of a lattice";
+
+  std::vector<std::uint8_t> keep;
+  std::vector<std::uint32_t> slots;
+  const auto counts = sph::applySplitMerge(sim, decision, partner, keep, slots);
+  EXPECT_EQ(counts.merges, pairs);
+  EXPECT_EQ(p.size(), n - static_cast<std::size_t>(pairs));
+  EXPECT_EQ(p.countOf(sph::SizeClass::Large), static_cast<std::size_t>(pairs));
+  EXPECT_EQ(p.totalMass(), mass_before);
+  EXPECT_LT((momentum(p) - momentum_before).norm(), 1e-6 * (1.0 + momentum_before.norm()));
+}
+
+TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
+  sph::Simulation sim(poolScene(0.3, 0.3, 300), sph::SizeClass::Large);
+  prepare(sim);
+  sph::ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  std::vector<std::int8_t> merge_all(n, sph::kMerge);
+  std::vector<std::int32_t> partner(n, 0);
+  sph::choosePartners(p, sim.grid(), merge_all, partner);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(partner[i], -1);
+
+  std::vector<std::int8_t> split_all(n, sph::kSplit);
+  std::vector<std::uint8_t> keep;
+  std::vector<std::uint32_t> slots;
+  sph::applySplitMerge(sim, split_all, std::vector<std::int32_t>(n, -1), keep, slots);
+  ASSERT_EQ(p.size(), 2 * n);
+  std::vector<std::int8_t> split_again(p.size(), sph::kSplit);
+  const auto counts =
+      sph::applySplitMerge(sim, split_again, std::vector<std::int32_t>(p.size(), -1), keep, slots);
+  EXPECT_EQ(counts.splits, 0);
+  EXPECT_EQ(p.size(), 2 * n);
+}
+
+// Splitting every particle of a fluid at rest changes its mean density by less than 5 %.
+TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
+  sph::Simulation sim(poolScene(0.5, 0.5, 1500), sph::SizeClass::Large);
+  sim.rebuildNeighbors();
+  sph::computeDensityPressure(sim.params(), sim.kernels(), sim.grid(), sim.particles());
+  auto meanDensity = [&] {
+    double sum = 0.0;
+    for (float rho : sim.particles().density) sum += rho;
+    return sum / static_cast<double>(sim.particles().size());
+  };
+  const double before = meanDensity();
+  const std::size_t n = sim.particles().size();
+  std::vector<std::uint8_t> keep;
+  std::vector<std::uint32_t> slots;
+  sph::applySplitMerge(sim, std::vector<std::int8_t>(n, sph::kSplit),
+                       std::vector<std::int32_t>(n, -1), keep, slots);
+  sim.rebuildNeighbors();
+  sph::computeDensityPressure(sim.params(), sim.kernels(), sim.grid(), sim.particles());
+  const double after = meanDensity();
+  EXPECT_LT(std::abs(after - before) / before, 0.05) << "before " << before << " after " << after;
+}
+
+TEST(SplitMerge, SplitDirectionIsAUnitVectorThatDependsOnTheId) {
+  for (std::uint32_t id : {0u, 1u, 2u, 12345u, 4000000000u}) {
+    EXPECT_NEAR(sph::splitDirection(id).norm(), 1.0f, 1e-5f);
+    EXPECT_EQ(sph::splitDirection(id), sph::splitDirection(id));
+  }
+  EXPECT_NE(sph::splitDirection(1), sph::splitDirection(2));
+}
+
+}  // namespace
