@@ -1,0 +1,179 @@
+#include "app/control_executor.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <exception>
+#include <map>
+#include <string>
+
+#include "net/frame_encoder.h"
+#include "scene/scene_loader.h"
+
+namespace app {
+namespace {
+
+using gsph::v1::ControlReply;
+using gsph::v1::ErrorCode;
+
+// Settable parameter names and where each lives. Booleans are 0 or 1.
+double* adaptiveField(sph::AdaptiveConfig& c, const std::string& name) {
+  static const std::map<std::string, double sph::AdaptiveConfig::*> fields = {
+      {"gaze_radius", &sph::AdaptiveConfig::gaze_radius},
+      {"gaze_ring_radius", &sph::AdaptiveConfig::gaze_ring_radius},
+      {"gaze_ring", &sph::AdaptiveConfig::gaze_ring_radius},  // the schema comment's short name
+      {"gaze_stale_s", &sph::AdaptiveConfig::gaze_stale_s},
+      {"gaze_hold_s", &sph::AdaptiveConfig::gaze_hold_s},
+      {"alpha", &sph::AdaptiveConfig::alpha},
+      {"beta", &sph::AdaptiveConfig::beta},
+      {"gamma", &sph::AdaptiveConfig::gamma},
+      {"threshold", &sph::AdaptiveConfig::threshold},
+  };
+  const auto it = fields.find(name);
+  return it == fields.end() ? nullptr : &(c.*(it->second));
+}
+
+bool asBool(double v, bool& out) {
+  if (v != 0.0 && v != 1.0) return false;
+  out = v == 1.0;
+  return true;
+}
+
+// Checks every value on copies and applies them all only when all pass.
+std::string applyParameters(const gsph::v1::SetParametersRequest& request, ControlTarget& target,
+                            ControlEffects& effects) {
+  if (request.values().empty()) return "no parameters given";
+  sph::AdaptiveConfig config = target.session.config();
+  RunSettings settings = target.settings;
+  for (const auto& [name, value] : request.values()) {
+    if (!std::isfinite(value)) return "parameter '" + name + "' is not finite";
+    if (double* field = adaptiveField(config, name)) {
+      *field = value;
+    } else if (name == "surface_includes_walls") {
+      if (!asBool(value, config.surface_includes_walls)) return name + " must be 0 or 1";
+    } else if (name == "publish_hz") {
+      if (value <= 0.0 || value > kMaxPublishHz) {
+        return "publish_hz must be in (0, " + std::to_string(static_cast<int>(kMaxPublishHz)) + "]";
+      }
+      settings.publish_hz = value;
+    } else if (name == "quantized") {
+      if (!asBool(value, settings.quantized)) return name + " must be 0 or 1";
+    } else if (name == "free_run") {
+      if (!asBool(value, settings.free_run)) return name + " must be 0 or 1";
+    } else {
+      return "unknown parameter '" + name + "'";
+    }
+  }
+  try {
+    config.validate();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  effects.restart_clock = settings.free_run != target.settings.free_run;
+  target.session.setConfig(config);
+  target.settings = settings;
+  return {};
+}
+
+void fail(ControlReply& reply, ErrorCode code, const std::string& error) {
+  reply.set_ok(false);
+  reply.set_error_code(code);
+  reply.set_error(error);
+}
+
+}  // namespace
+
+void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
+  const SimSession& s = target.session;
+  status.set_scene(s.scene().name);
+  status.set_method(net::toProtoMethod(s.method()));
+  status.set_paused(target.settings.paused);
+  const sph::ParticleSet& p = s.sim().particles();
+  const std::size_t large = p.countOf(sph::SizeClass::Large);
+  status.set_step(s.sim().stepCount());
+  status.set_sim_time(s.sim().time());
+  status.set_particle_count(static_cast<std::uint32_t>(p.size()));
+  status.set_large_count(static_cast<std::uint32_t>(large));
+  status.set_small_count(static_cast<std::uint32_t>(p.size() - large));
+  status.clear_scenes();
+  try {
+    for (const std::string& name : scene::listScenes(s.sceneDir())) status.add_scenes(name);
+  } catch (const std::exception& e) {
+    spdlog::debug("cannot list scenes: {}", e.what());
+  }
+  auto& params = *status.mutable_parameters();
+  const sph::AdaptiveConfig& c = s.config();
+  params["gaze_radius"] = c.gaze_radius;
+  params["gaze_ring_radius"] = c.gaze_ring_radius;
+  params["gaze_stale_s"] = c.gaze_stale_s;
+  params["gaze_hold_s"] = c.gaze_hold_s;
+  params["alpha"] = c.alpha;
+  params["beta"] = c.beta;
+  params["gamma"] = c.gamma;
+  params["threshold"] = c.threshold;
+  params["surface_includes_walls"] = c.surface_includes_walls ? 1.0 : 0.0;
+  params["publish_hz"] = target.settings.publish_hz;
+  params["quantized"] = target.settings.quantized ? 1.0 : 0.0;
+  params["free_run"] = target.settings.free_run ? 1.0 : 0.0;
+  if (target.fill_counters) target.fill_counters(status);
+}
+
+ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& target,
+                            ControlEffects& effects) {
+  ControlReply reply;
+  reply.set_protocol_version(gsph::v1::PROTOCOL_VERSION_CURRENT);
+  reply.set_request_id(request.request_id());
+  reply.set_ok(true);
+  reply.set_error_code(gsph::v1::ERROR_CODE_NONE);
+  SimSession& session = target.session;
+  try {
+    switch (request.command_case()) {
+      case gsph::v1::Control::kStatus:
+        break;
+      case gsph::v1::Control::kPause:
+        target.settings.paused = true;
+        break;
+      case gsph::v1::Control::kResume:
+        effects.restart_clock = target.settings.paused;
+        target.settings.paused = false;
+        break;
+      case gsph::v1::Control::kReset:
+        session.reset();
+        effects.restart_clock = true;
+        break;
+      case gsph::v1::Control::kLoadScene:
+        try {
+          session.load(request.load_scene().scene(), session.method());
+          effects.restart_clock = true;
+        } catch (const scene::SceneError& e) {
+          fail(reply, gsph::v1::ERROR_CODE_UNKNOWN_SCENE, e.what());
+        }
+        break;
+      case gsph::v1::Control::kSetMethod: {
+        sph::Method method;
+        if (!net::fromProtoMethod(request.set_method().method(), method)) {
+          fail(reply, gsph::v1::ERROR_CODE_UNKNOWN_METHOD,
+               "unknown method value " + std::to_string(request.set_method().method()));
+          break;
+        }
+        // To or from regular the scene restarts (the particle classes change wholesale).
+        if (session.setMethod(method)) effects.restart_clock = true;
+        break;
+      }
+      case gsph::v1::Control::kSetParameters: {
+        const std::string error = applyParameters(request.set_parameters(), target, effects);
+        if (!error.empty()) fail(reply, gsph::v1::ERROR_CODE_BAD_PARAMETER, error);
+        break;
+      }
+      case gsph::v1::Control::COMMAND_NOT_SET:
+        fail(reply, gsph::v1::ERROR_CODE_BAD_REQUEST, "no command");
+        break;
+    }
+  } catch (const std::exception& e) {
+    fail(reply, gsph::v1::ERROR_CODE_INTERNAL, e.what());
+  }
+  fillStatus(target, *reply.mutable_status());
+  return reply;
+}
+
+}  // namespace app

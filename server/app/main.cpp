@@ -1,0 +1,114 @@
+// sph_server: loads a scene, runs an SPH method in real time (or free-run), publishes frames and takes
+// gaze, camera poses and control requests over ZeroMQ. See server/app/README.md.
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <csignal>
+#include <ctime>
+#include <exception>
+
+#include "app/server.h"
+#include "scene/scene_loader.h"
+
+namespace {
+
+struct CliOptions {
+  app::ServerOptions server;
+  std::string method = "gaze";
+  std::string gaze_socket = "sub";
+  std::string pose_socket = "sub";
+  std::string log_level = "info";
+};
+
+void addOptions(CLI::App& cli, CliOptions& o) {
+  app::SimLoopOptions& sim = o.server.sim;
+  net::Endpoints& ep = o.server.net.endpoints;
+  sim.scene_dir = scene::defaultSceneDir();
+  cli.add_option("--scene", sim.scene, "scene name in --scene-dir, or a path to a scene file")
+      ->capture_default_str();
+  cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")
+      ->capture_default_str();
+  cli.add_option("--method", o.method, "regular, surface, gaze or hybrid")->capture_default_str();
+  cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
+  cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
+      ->check(CLI::Range(1e-3, app::kMaxPublishHz))->capture_default_str();
+  cli.add_flag("--quantized", sim.settings.quantized, "16-bit positions relative to the box (6 bytes per particle)");
+  cli.add_flag("--velocities", sim.velocities, "add velocities (3 float32) to every frame");
+  cli.add_option("--threads", sim.threads, "OpenMP threads for the step")->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  cli.add_option("--max-steps", sim.max_steps, "stop after this many steps (0: run until SIGINT/SIGTERM)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  cli.add_option("--frames-endpoint", ep.frames, "XPUB: frames out")->capture_default_str();
+  cli.add_option("--gaze-endpoint", ep.gaze, "GazeSample in")->capture_default_str();
+  cli.add_option("--pose-endpoint", ep.pose, "CameraPose in")->capture_default_str();
+  cli.add_option("--control-endpoint", ep.control, "ROUTER: Control in, ControlReply out")
+      ->capture_default_str();
+  cli.add_option("--gaze-socket", o.gaze_socket, "sub (senders connect PUB) or pull (senders connect PUSH)")
+      ->check(CLI::IsMember({"sub", "pull"}))->capture_default_str();
+  cli.add_option("--pose-socket", o.pose_socket, "sub or pull, as --gaze-socket")
+      ->check(CLI::IsMember({"sub", "pull"}))->capture_default_str();
+  cli.add_option("--camera-source", sim.camera_source,
+                 "viewer_id whose camera pose drives the gaze projection (default: the most recent pose)");
+  cli.add_option("--gaze-radius", sim.adaptive.gaze_radius, "gaze circle radius, fraction of viewport width")
+      ->capture_default_str();
+  cli.add_option("--gaze-ring-radius", sim.adaptive.gaze_ring_radius,
+                 "outer radius of the hysteresis ring, same units")->capture_default_str();
+  cli.add_option("--gaze-stale-s", sim.adaptive.gaze_stale_s, "sample age after which the gaze is held")
+      ->capture_default_str();
+  cli.add_option("--gaze-hold-s", sim.adaptive.gaze_hold_s, "sample age after which surface refinement takes over")
+      ->capture_default_str();
+  cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"sph_server: gaze-adaptive SPH water over ZeroMQ (frames PUB, gaze, camera pose, control)"};
+  CliOptions o;
+  addOptions(cli, o);
+  CLI11_PARSE(cli, argc, argv);
+  spdlog::set_level(spdlog::level::from_str(o.log_level));
+
+  if (!sph::methodByName(o.method, o.server.sim.method)) {
+    spdlog::error("unknown method '{}' (regular, surface, gaze, hybrid)", o.method);
+    return 2;
+  }
+  net::inputSocketTypeByName(o.gaze_socket, o.server.net.gaze_type);
+  net::inputSocketTypeByName(o.pose_socket, o.server.net.pose_type);
+
+  // Block the stop signals before any thread starts (libzmq's included), so only the wait below
+  // receives them and shutdown runs in an ordinary thread, not in a signal handler.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  try {
+    app::Server server(o.server);
+    const net::Endpoints& ep = server.endpoints();
+    spdlog::info("endpoint frames {}", ep.frames);
+    spdlog::info("endpoint gaze {}", ep.gaze);
+    spdlog::info("endpoint pose {}", ep.pose);
+    spdlog::info("endpoint control {}", ep.control);
+    spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene, o.method, o.server.sim.settings.publish_hz,
+                 o.server.sim.settings.free_run ? "free-run" : "real time");
+    server.start();
+    const timespec poll_interval{0, 100'000'000};
+    int signal = 0;
+    while (!server.finished()) {
+      signal = sigtimedwait(&stop_signals, nullptr, &poll_interval);
+      if (signal > 0) break;
+    }
+    if (signal > 0) spdlog::info("{} received, shutting down", signal == SIGINT ? "SIGINT" : "SIGTERM");
+    server.stop();
+    spdlog::info("final status: {}", server.statusLine());
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+  return 0;
+}

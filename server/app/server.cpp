@@ -1,0 +1,37 @@
+#include "app/server.h"
+
+#include <google/protobuf/stubs/logging.h>
+#include <spdlog/spdlog.h>
+
+namespace app {
+
+void routeProtobufLogs() {
+  google::protobuf::SetLogHandler([](google::protobuf::LogLevel, const char* file, int line,
+                                     const std::string& message) {
+    spdlog::debug("protobuf {}:{}: {}", file, line, message);
+  });
+}
+
+Server::Server(const ServerOptions& options) : context_(1) {
+  routeProtobufLogs();
+  net_ = std::make_unique<net::NetLoop>(context_, options.net, mailbox_, rejections_);
+  sim_ = std::make_unique<SimLoop>(context_, options.sim, mailbox_, *net_, rejections_);
+}
+
+Server::~Server() { stop(); }
+
+void Server::start() {
+  if (running_) return;
+  net_->start();
+  sim_->start();
+  running_ = true;
+}
+
+void Server::stop() {
+  if (!running_) return;
+  sim_->stop();
+  net_->stop();
+  running_ = false;
+}
+
+}  // namespace app

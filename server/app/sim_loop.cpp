@@ -1,0 +1,233 @@
+#include "app/sim_loop.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+#include "net/input_validation.h"
+
+namespace app {
+namespace {
+
+// Behind wall time by more than this (a slow step, a scene load), sim time is re-anchored instead of
+// running a burst of catch-up steps.
+constexpr std::chrono::milliseconds kMaxLag(100);
+
+std::chrono::steady_clock::duration seconds(double s) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s));
+}
+
+}  // namespace
+
+SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::InputMailbox& mailbox,
+                 const net::NetLoop& net, const net::RejectionLog& rejections)
+    : options_(options),
+      mailbox_(mailbox),
+      net_(net),
+      rejections_(rejections),
+      outbox_(context, net.framePipe(), net.replyPipe()),
+      encoder_(options.settings.quantized ? net::PositionEncoding::Quantized16
+                                          : net::PositionEncoding::Float32,
+               options.velocities),
+      settings_(options.settings),
+      session_(options.scene_dir, options.adaptive,
+               [this](sph::AdaptiveController& c) { feedGaze(c); }),
+      control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }} {
+  session_.load(options.scene, options.method, /*allow_paths=*/true);
+  net::fromScreenCamera(session_.camera(), camera_msg_);
+  camera_msg_.set_viewer_id("scene");
+}
+
+SimLoop::~SimLoop() { stop(); }
+
+void SimLoop::start() {
+  stop_ = false;
+  thread_ = std::thread([this] { run(); });
+}
+
+void SimLoop::stop() {
+  stop_ = true;
+  mailbox_.wake();
+  if (thread_.joinable()) thread_.join();
+}
+
+void SimLoop::restartClock(Clock::time_point now) {
+  anchor_wall_ = now;
+  anchor_sim_ = session_.sim().time();
+}
+
+SimLoop::Clock::time_point SimLoop::nextStepTime() const {
+  const double next_sim = session_.sim().time() + session_.sim().params().time_step;
+  return anchor_wall_ + seconds(next_sim - anchor_sim_);
+}
+
+void SimLoop::run() {
+  // OpenMP's thread count is per calling thread: set it on the thread that steps.
+  omp_set_num_threads(std::max(1, options_.threads));
+  Clock::time_point now = Clock::now();
+  restartClock(now);
+  next_publish_ = now;
+  next_status_ = now + seconds(options_.status_interval_s);
+  rate_window_start_ = now;
+  while (!stop_.load()) {
+    handleControls();
+    applyCamera();
+    now = Clock::now();
+    const bool running = !settings_.paused && !finished_.load();
+    if (running && (settings_.free_run || now >= nextStepTime())) {
+      if (!settings_.free_run && now - nextStepTime() > kMaxLag) restartClock(now);
+      session_.step();
+      counters_.steps.fetch_add(1);
+      ++rate_window_steps_;
+      now = Clock::now();
+      if (options_.max_steps > 0 && session_.sim().stepCount() >= options_.max_steps) {
+        publish();
+        finished_ = true;
+        spdlog::info("ran {} steps (--max-steps)", session_.sim().stepCount());
+      }
+    }
+    if (now >= next_publish_) {
+      publish();
+      next_publish_ += seconds(1.0 / settings_.publish_hz);
+      if (next_publish_ < now) next_publish_ = now + seconds(1.0 / settings_.publish_hz);
+    }
+    updateRates(now);
+    if (options_.status_interval_s > 0.0 && now >= next_status_) {
+      spdlog::info("{}", statusLine());
+      next_status_ = now + seconds(options_.status_interval_s);
+    }
+    if (running && settings_.free_run) continue;
+    Clock::time_point deadline = next_publish_;
+    if (running) deadline = std::min(deadline, nextStepTime());
+    if (options_.status_interval_s > 0.0) deadline = std::min(deadline, next_status_);
+    mailbox_.waitUntil(deadline);
+  }
+  refreshStatusLine(Clock::now());
+}
+
+void SimLoop::handleControls() {
+  requests_.clear();
+  mailbox_.takeControls(requests_);
+  for (const net::ControlRequest& request : requests_) {
+    ControlEffects effects;
+    const gsph::v1::ControlReply reply = executeControl(request.control, control_target_, effects);
+    if (!reply.ok()) {
+      spdlog::info("control request {} refused: {}", request.control.request_id(), reply.error());
+    }
+    if (effects.restart_clock) restartClock(Clock::now());
+    if (!session_.cameraFromClient()) {
+      net::fromScreenCamera(session_.camera(), camera_msg_);  // a new scene brings its own camera
+      camera_msg_.set_viewer_id("scene");
+    }
+    outbox_.sendReply(request, reply);
+  }
+}
+
+void SimLoop::applyCamera() {
+  const std::uint64_t version = mailbox_.poseVersion();
+  if (version == applied_pose_version_) return;
+  applied_pose_version_ = version;
+  net::PoseArrival pose;
+  if (!mailbox_.selectedPose(options_.camera_source, pose)) return;
+  session_.setCamera(pose.camera, /*from_client=*/true);
+  net::fromScreenCamera(pose.camera, camera_msg_);
+  camera_msg_.set_viewer_id(pose.viewer_id);
+  camera_msg_.set_sequence(pose.sequence);
+}
+
+void SimLoop::feedGaze(sph::AdaptiveController& controller) {
+  net::GazeArrival arrival;
+  sph::GazeInput input;
+  if (mailbox_.latestGaze(arrival)) {
+    input.present = true;
+    input.x = arrival.x;
+    input.y = arrival.y;
+    input.age_s = std::chrono::duration<double>(Clock::now() - arrival.arrived).count();
+    gaze_echo_.has_sample = true;
+    gaze_echo_.sample_sequence = arrival.sequence;
+    gaze_echo_.sample_bridge_time_us = arrival.bridge_time_us;
+    gaze_echo_.source_id = arrival.source_id;
+  }
+  controller.setGaze(input);
+}
+
+void SimLoop::publish() {
+  net::FrameInfo info;
+  info.sequence = frame_sequence_;
+  info.scene = session_.scene().name;
+  info.method = session_.method();
+  info.paused = settings_.paused;
+  info.steps_per_second = counters_.steps_per_second.load();
+  if (const sph::AdaptiveController* c = session_.controller()) {
+    const sph::AdaptiveStats& stats = c->lastStats();
+    gaze_echo_.mode = net::toProtoGazeMode(stats.gaze_mode);
+    gaze_echo_.x = stats.gaze_x;
+    gaze_echo_.y = stats.gaze_y;
+    gaze_echo_.age_s = stats.gaze_age_s;
+    gaze_echo_.radius = c->config().gaze_radius;
+    gaze_echo_.ring_radius = c->config().gaze_ring_radius;
+    info.gaze = gaze_echo_;
+  }
+  info.camera = &camera_msg_;
+  encoder_.setEncoding(settings_.quantized ? net::PositionEncoding::Quantized16
+                                           : net::PositionEncoding::Float32);
+  encoder_.encode(session_.sim(), info);
+  // Sequence numbers count frames offered; one the pipe drops shows up as a gap, as any drop does.
+  ++frame_sequence_;
+  if (outbox_.offerFrame(encoder_.serialize())) {
+    counters_.frames_published.fetch_add(1);
+  } else {
+    counters_.frames_dropped.fetch_add(1);
+  }
+}
+
+void SimLoop::updateRates(Clock::time_point now) {
+  const double window = std::chrono::duration<double>(now - rate_window_start_).count();
+  if (window < 1.0) return;
+  counters_.steps_per_second.store(static_cast<float>(rate_window_steps_ / window));
+  rate_window_steps_ = 0;
+  rate_window_start_ = now;
+  refreshStatusLine(now);
+}
+
+void SimLoop::refreshStatusLine(Clock::time_point now) {
+  // Rebuilt here, on the thread that owns the session, so other threads can read it any time.
+  const sph::ParticleSet& p = session_.sim().particles();
+  const std::size_t large = p.countOf(sph::SizeClass::Large);
+  net::GazeArrival gaze;
+  std::string gaze_text = "no gaze";
+  if (mailbox_.latestGaze(gaze)) {
+    gaze_text = fmt::format("gaze age {:.0f} ms",
+                            std::chrono::duration<double, std::milli>(now - gaze.arrived).count());
+  }
+  std::string line = fmt::format(
+      "{} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small), {} subscribers, "
+      "{}, {} frames sent, {} dropped, {} inputs rejected",
+      session_.scene().name, sph::methodName(session_.method()), session_.sim().stepCount(),
+      session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(),
+      p.size(), large, p.size() - large, net_.counters().subscriptions.load(), gaze_text,
+      counters_.frames_published.load(), counters_.frames_dropped.load(), rejections_.total());
+  std::lock_guard lock(status_mutex_);
+  status_line_ = std::move(line);
+}
+
+std::string SimLoop::statusLine() const {
+  std::lock_guard lock(status_mutex_);
+  return status_line_.empty() ? std::string("starting") : status_line_;
+}
+
+void SimLoop::fillCounters(gsph::v1::ServerStatus& status) const {
+  status.set_steps_per_second(counters_.steps_per_second.load());
+  status.set_subscribers(static_cast<std::uint32_t>(std::max<std::int64_t>(0, net_.counters().subscriptions.load())));
+  net::GazeArrival gaze;
+  status.set_gaze_age_ms(mailbox_.latestGaze(gaze)
+                             ? static_cast<float>(std::chrono::duration<double, std::milli>(
+                                                      Clock::now() - gaze.arrived).count())
+                             : -1.0f);
+  status.set_frames_published(counters_.frames_published.load());
+  status.set_inputs_rejected(rejections_.total());
+}
+
+}  // namespace app

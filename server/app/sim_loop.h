@@ -1,0 +1,110 @@
+// The simulation thread: owns the SimSession and the encoder, steps in wall-clock time (or free-run),
+// applies control requests and camera poses between steps, hands the freshest gaze to the controller
+// just before each adaptive step, and publishes frames at the configured rate through SimOutbox.
+// It never touches a network socket, so nothing a peer does can make a step wait.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/control_executor.h"
+#include "app/sim_session.h"
+#include "net/frame_encoder.h"
+#include "net/input_mailbox.h"
+#include "net/net_loop.h"
+#include "net/sim_outbox.h"
+
+namespace app {
+
+struct SimLoopOptions {
+  std::string scene = "dambreak";
+  std::string scene_dir;
+  sph::Method method = sph::Method::Gaze;
+  sph::AdaptiveConfig adaptive;
+  RunSettings settings;
+  bool velocities = false;
+  int threads = 2;
+  std::string camera_source;        // empty: the most recent pose from any viewer
+  std::int64_t max_steps = 0;       // stop after this many steps (0: run until stopped)
+  double status_interval_s = 5.0;   // periodic one-line status (0: off)
+};
+
+// Counters the status line, the control replies and the tests read from other threads.
+struct SimCounters {
+  std::atomic<std::int64_t> steps{0};
+  std::atomic<std::uint64_t> frames_published{0};
+  std::atomic<std::uint64_t> frames_dropped{0};
+  std::atomic<float> steps_per_second{0.0f};
+};
+
+class SimLoop {
+ public:
+  // Loads the scene (throws when it cannot) in the calling thread.
+  SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::InputMailbox& mailbox,
+          const net::NetLoop& net, const net::RejectionLog& rejections);
+  ~SimLoop();
+  SimLoop(const SimLoop&) = delete;
+  SimLoop& operator=(const SimLoop&) = delete;
+
+  void start();
+  void stop();
+  // True once max_steps were run (the last frame is published first).
+  bool finished() const { return finished_.load(); }
+  const SimCounters& counters() const { return counters_; }
+  // One line: steps/s, particles, subscribers, gaze age, frames, drops, rejected input.
+  std::string statusLine() const;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  void run();
+  void handleControls();
+  void applyCamera();
+  void feedGaze(sph::AdaptiveController& controller);
+  void restartClock(Clock::time_point now);
+  Clock::time_point nextStepTime() const;
+  void publish();
+  void fillCounters(gsph::v1::ServerStatus& status) const;
+  void updateRates(Clock::time_point now);
+  void refreshStatusLine(Clock::time_point now);
+
+  SimLoopOptions options_;
+  net::InputMailbox& mailbox_;
+  const net::NetLoop& net_;
+  const net::RejectionLog& rejections_;
+  net::SimOutbox outbox_;
+  net::FrameEncoder encoder_;
+  RunSettings settings_;
+  SimSession session_;
+  ControlTarget control_target_;
+  std::vector<net::ControlRequest> requests_;
+
+  // Gaze handed to the controller (echoed in frames), camera pose in use.
+  net::GazeEcho gaze_echo_;
+  std::uint64_t applied_pose_version_ = 0;
+  gsph::v1::CameraPose camera_msg_;
+
+  // Pacing: sim time follows wall time from the anchor on.
+  Clock::time_point anchor_wall_{};
+  double anchor_sim_ = 0.0;
+  Clock::time_point next_publish_{};
+  Clock::time_point next_status_{};
+  Clock::time_point rate_window_start_{};
+  std::int64_t rate_window_steps_ = 0;
+  std::uint64_t frame_sequence_ = 0;
+
+  SimCounters counters_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> finished_{false};
+  // The status line is written here and read by other threads (logs, final status).
+  mutable std::mutex status_mutex_;
+  std::string status_line_;
+  std::thread thread_;
+};
+
+}  // namespace app

@@ -1,0 +1,87 @@
+#include "app/sim_session.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "scene/scene_loader.h"
+
+namespace app {
+namespace {
+
+// Installs the controller as the simulation's adaptive step and calls `before` ahead of it.
+class FedAdaptiveStep : public sph::AdaptiveStep {
+ public:
+  FedAdaptiveStep(std::unique_ptr<sph::AdaptiveController> controller, BeforeAdaptiveStep before)
+      : controller_(std::move(controller)), before_(std::move(before)) {}
+  void apply(sph::Simulation& sim) override {
+    if (before_) before_(*controller_);
+    controller_->apply(sim);
+  }
+
+ private:
+  std::unique_ptr<sph::AdaptiveController> controller_;
+  BeforeAdaptiveStep before_;
+};
+
+}  // namespace
+
+SimSession::SimSession(std::string scene_dir, const sph::AdaptiveConfig& config,
+                       BeforeAdaptiveStep before)
+    : scene_dir_(std::move(scene_dir)), config_(config), before_(std::move(before)) {
+  config_.validate();
+}
+
+void SimSession::load(const std::string& scene_name, sph::Method method, bool allow_paths) {
+  // Remote peers get names from the scene folder only: they must not make the server read any path.
+  const std::vector<std::string> names = scene::listScenes(scene_dir_);
+  if (!allow_paths && std::find(names.begin(), names.end(), scene_name) == names.end()) {
+    throw scene::SceneError("no scene '" + scene_name + "' in " + scene_dir_);
+  }
+  start(scene::loadScene(scene_name, scene_dir_), method);
+}
+
+void SimSession::reset() { start(scene_, method_); }
+
+bool SimSession::setMethod(sph::Method method) {
+  if (method == method_) return false;
+  if (controller_ != nullptr && method != sph::Method::Regular) {
+    controller_->setMethod(method);
+    method_ = method;
+    return false;
+  }
+  start(scene_, method);
+  return true;
+}
+
+void SimSession::setConfig(const sph::AdaptiveConfig& config) {
+  config_ = config;
+  if (controller_ != nullptr) controller_->setConfig(config_);
+}
+
+void SimSession::setCamera(const sph::ScreenCamera& camera, bool from_client) {
+  camera_ = camera;
+  camera_from_client_ = from_client;
+  if (controller_ != nullptr) controller_->setCamera(camera_);
+}
+
+void SimSession::start(const sph::Scene& scene, sph::Method method) {
+  // Room for every LARGE particle to split (the thesis's 20,000 for 10,000 LARGE).
+  const std::size_t capacity =
+      std::max<std::size_t>(sph::ParticleSet::kDefaultCapacity,
+                            static_cast<std::size_t>(sph::initialParticleCount(scene, sph::SizeClass::Small)));
+  // Build everything first, then swap: a throw leaves the running simulation untouched.
+  auto sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method), capacity);
+  const sph::ScreenCamera camera = camera_from_client_ ? camera_ : sph::cameraFromSpec(scene.camera);
+  sph::AdaptiveController* controller = nullptr;
+  if (auto owned = sph::makeAdaptiveController(method, config_, camera)) {
+    controller = owned.get();
+    sim->setAdaptiveStep(std::make_unique<FedAdaptiveStep>(std::move(owned), before_));
+  }
+  scene_ = scene;
+  method_ = method;
+  camera_ = camera;
+  sim_ = std::move(sim);
+  controller_ = controller;
+}
+
+}  // namespace app

@@ -1,0 +1,68 @@
+// The simulation as the server runs it: the scene, the Simulation, the adaptive controller and the
+// camera its gaze projection uses, with the changes control requests make (load, reset, set method,
+// set parameters). Owned and used by the simulation thread only.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "sph/adaptive/adaptive_controller.h"
+#include "sph/adaptive/method.h"
+#include "sph/camera.h"
+#include "sph/scene.h"
+#include "sph/simulation.h"
+
+namespace app {
+
+// Called just before each adaptive step, so the controller gets the freshest gaze the network thread
+// has (a sample that arrives during the fluid stages still refines this step).
+using BeforeAdaptiveStep = std::function<void(sph::AdaptiveController&)>;
+
+class SimSession {
+ public:
+  SimSession(std::string scene_dir, const sph::AdaptiveConfig& config, BeforeAdaptiveStep before);
+
+  // Starts `scene` with `method`: a name in the scene folder, or with `allow_paths` (the command
+  // line, never a remote peer) also a path to a scene file. Throws scene::SceneError or
+  // std::exception when it cannot; the running simulation is then left as it was.
+  void load(const std::string& scene, sph::Method method, bool allow_paths = false);
+  // Restarts the current scene from its initial state, same method.
+  void reset();
+  // Between adaptive methods the controller switches in place and the particles stay; to or from
+  // regular the particle set changes class wholesale, so the scene restarts. True when it restarted.
+  bool setMethod(sph::Method method);
+  // Validated by the caller (AdaptiveConfig::validate).
+  void setConfig(const sph::AdaptiveConfig& config);
+  // The camera the gaze projection uses; `from_client` false means the scene's default camera.
+  void setCamera(const sph::ScreenCamera& camera, bool from_client);
+
+  void step() { sim_->step(); }
+
+  bool loaded() const { return sim_ != nullptr; }
+  sph::Simulation& sim() { return *sim_; }
+  const sph::Simulation& sim() const { return *sim_; }
+  const sph::Scene& scene() const { return scene_; }
+  const std::string& sceneDir() const { return scene_dir_; }
+  sph::Method method() const { return method_; }
+  const sph::AdaptiveConfig& config() const { return config_; }
+  const sph::ScreenCamera& camera() const { return camera_; }
+  bool cameraFromClient() const { return camera_from_client_; }
+  // nullptr for the regular method.
+  const sph::AdaptiveController* controller() const { return controller_; }
+
+ private:
+  void start(const sph::Scene& scene, sph::Method method);
+
+  std::string scene_dir_;
+  sph::AdaptiveConfig config_;
+  BeforeAdaptiveStep before_;
+  sph::Scene scene_;
+  sph::Method method_ = sph::Method::Regular;
+  sph::ScreenCamera camera_;
+  bool camera_from_client_ = false;
+  std::unique_ptr<sph::Simulation> sim_;
+  sph::AdaptiveController* controller_ = nullptr;  // owned by sim_ through the adaptive step
+};
+
+}  // namespace app
