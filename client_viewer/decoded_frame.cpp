@@ -1,0 +1,203 @@
+#include "decoded_frame.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace viewer {
+
+// The wire formats are little-endian; memcpy into host floats is only right on a little-endian host.
+static_assert(std::endian::native == std::endian::little, "viewer assumes a little-endian host");
+
+namespace {
+
+constexpr std::size_t kFloatStride = 12;     // 3 x float32
+constexpr std::size_t kQuantizedStride = 6;  // 3 x uint16
+
+Vec3f toVec(const gsph::v1::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+bool finite(const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool decodeGeometry(const gsph::v1::Geometry& g, SceneGeometry& out, std::string& error) {
+  out = {};
+  if (g.has_box()) {
+    out.has_box = true;
+    out.box_min = toVec(g.box().min());
+    out.box_max = toVec(g.box().max());
+    if (!finite(out.box_min) || !finite(out.box_max)) {
+      error = "geometry box is not finite";
+      return false;
+    }
+  }
+  for (const auto& s : g.spheres()) {
+    SphereShape shape{toVec(s.center()), s.radius()};
+    if (!finite(shape.center) || !std::isfinite(shape.radius) || shape.radius < 0.0f) {
+      error = "geometry sphere is not finite or has a negative radius";
+      return false;
+    }
+    out.spheres.push_back(shape);
+  }
+  for (const auto& c : g.cylinders()) {
+    CylinderShape shape{c.x(), c.z(), c.radius()};
+    if (!std::isfinite(shape.x) || !std::isfinite(shape.z) || !std::isfinite(shape.radius) ||
+        shape.radius < 0.0f) {
+      error = "geometry cylinder is not finite or has a negative radius";
+      return false;
+    }
+    out.cylinders.push_back(shape);
+  }
+  return true;
+}
+
+bool decodeFloatPositions(const std::string& bytes, std::size_t n, std::vector<Vec3f>& out,
+                          std::string& error) {
+  if (bytes.size() != n * kFloatStride) {
+    error = "float32 positions hold " + std::to_string(bytes.size()) + " bytes, expected " +
+            std::to_string(n * kFloatStride) + " for " + std::to_string(n) + " particles";
+    return false;
+  }
+  out.resize(n);
+  if (n > 0) std::memcpy(out.data(), bytes.data(), bytes.size());
+  for (const auto& p : out) {
+    if (!finite(p)) {
+      error = "a float32 position is not finite";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool decodeQuantizedPositions(const gsph::v1::Frame& frame, std::size_t n,
+                              std::vector<Vec3f>& out, std::string& error) {
+  const std::string& bytes = frame.positions();
+  if (bytes.size() != n * kQuantizedStride) {
+    error = "quantized16 positions hold " + std::to_string(bytes.size()) + " bytes, expected " +
+            std::to_string(n * kQuantizedStride) + " for " + std::to_string(n) + " particles";
+    return false;
+  }
+  if (!frame.has_quantization_box()) {
+    error = "quantized16 positions without a quantization_box";
+    return false;
+  }
+  const Vec3f lo = toVec(frame.quantization_box().min());
+  const Vec3f hi = toVec(frame.quantization_box().max());
+  if (!finite(lo) || !finite(hi) || hi.x < lo.x || hi.y < lo.y || hi.z < lo.z) {
+    error = "quantization_box is not finite or has max < min";
+    return false;
+  }
+  // value v maps to min + v / 65535 * (max - min) per axis (proto/sph.proto)
+  const float sx = (hi.x - lo.x) / 65535.0f;
+  const float sy = (hi.y - lo.y) / 65535.0f;
+  const float sz = (hi.z - lo.z) / 65535.0f;
+  out.resize(n);
+  const auto* raw = reinterpret_cast<const unsigned char*>(bytes.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint16_t q[3];
+    std::memcpy(q, raw + i * kQuantizedStride, kQuantizedStride);
+    out[i] = {lo.x + static_cast<float>(q[0]) * sx, lo.y + static_cast<float>(q[1]) * sy,
+              lo.z + static_cast<float>(q[2]) * sz};
+  }
+  return true;
+}
+
+}  // namespace
+
+bool GazeOverlay::drawable() const {
+  return (mode == gsph::v1::GAZE_MODE_TRACKING || mode == gsph::v1::GAZE_MODE_HOLDING) &&
+         radius > 0.0f;
+}
+
+bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error) {
+  if (frame.protocol_version() != gsph::v1::PROTOCOL_VERSION_CURRENT) {
+    error = "unknown protocol_version " + std::to_string(frame.protocol_version());
+    return false;
+  }
+  const std::size_t n = frame.particle_count();
+  switch (frame.encoding()) {
+    case gsph::v1::POSITION_ENCODING_FLOAT32:
+      if (!decodeFloatPositions(frame.positions(), n, out.positions, error)) return false;
+      break;
+    case gsph::v1::POSITION_ENCODING_QUANTIZED16:
+      if (!decodeQuantizedPositions(frame, n, out.positions, error)) return false;
+      break;
+    default:
+      error = "unknown position encoding " + std::to_string(static_cast<int>(frame.encoding()));
+      return false;
+  }
+  if (frame.size_classes().size() != n) {
+    error = "size_classes holds " + std::to_string(frame.size_classes().size()) +
+            " bytes, expected one per particle (" + std::to_string(n) + ")";
+    return false;
+  }
+  out.classes.assign(frame.size_classes().begin(), frame.size_classes().end());
+  out.small_count = 0;
+  out.large_count = 0;
+  for (std::uint8_t c : out.classes) {
+    if (c == kClassSmall) {
+      ++out.small_count;
+    } else if (c == kClassLarge) {
+      ++out.large_count;
+    } else {
+      error = "size class " + std::to_string(c) + " is neither SMALL (0) nor LARGE (1)";
+      return false;
+    }
+  }
+  out.speeds.clear();
+  if (!frame.velocities().empty()) {
+    std::vector<Vec3f> velocities;
+    if (!decodeFloatPositions(frame.velocities(), n, velocities, error)) {
+      error = "velocities: " + error;
+      return false;
+    }
+    out.speeds.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3f& v = velocities[i];
+      out.speeds[i] = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    }
+  }
+  out.radius_small = frame.radius_small();
+  out.radius_large = frame.radius_large();
+  if (!std::isfinite(out.radius_small) || !std::isfinite(out.radius_large) ||
+      out.radius_small < 0.0f || out.radius_large < 0.0f) {
+    error = "particle radii must be finite and non-negative";
+    return false;
+  }
+  if (!decodeGeometry(frame.geometry(), out.geometry, error)) return false;
+
+  out.sequence = frame.sequence();
+  out.step = frame.step();
+  out.sim_time = frame.sim_time();
+  out.send_time_us = frame.send_time_us();
+  out.scene = frame.scene();
+  out.method = frame.method();
+  out.paused = frame.paused();
+  out.timings = frame.timings();
+  out.steps_per_second = frame.steps_per_second();
+  const auto& g = frame.gaze();
+  out.gaze = {g.mode(), g.x(), g.y(), g.radius(), g.ring_radius(), g.age_ms()};
+  if (!std::isfinite(out.gaze.x) || !std::isfinite(out.gaze.y) ||
+      !std::isfinite(out.gaze.radius) || !std::isfinite(out.gaze.ring_radius)) {
+    out.gaze.mode = gsph::v1::GAZE_MODE_UNSPECIFIED;  // not drawable; the frame itself is fine
+  }
+  out.has_camera = frame.has_camera();
+  out.camera = frame.camera();
+  out.encoding = frame.encoding();
+  return true;
+}
+
+bool decodeFrameBytes(const void* data, std::size_t size, DecodedFrame& out, std::string& error) {
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    error = "frame of " + std::to_string(size) + " bytes is too large to parse";
+    return false;
+  }
+  gsph::v1::Frame frame;
+  if (!frame.ParseFromArray(data, static_cast<int>(size))) {
+    error = "frame bytes do not parse as gsph.v1.Frame";
+    return false;
+  }
+  out.wire_bytes = size;
+  return decodeFrame(frame, out, error);
+}
+
+}  // namespace viewer

@@ -1,0 +1,96 @@
+// A Frame from the server checked and unpacked into what the renderer and the panel need: positions
+// as floats whatever the wire encoding, one class byte per particle, optional speeds. Decoding happens
+// on the network thread, so the render thread only ever uploads a finished frame.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "proto/sph.pb.h"
+
+namespace viewer {
+
+struct Vec3f {
+  float x = 0.0f;
+  float y = 0.0f;
+  float z = 0.0f;
+};
+
+struct SphereShape {
+  Vec3f center;
+  float radius = 0.0f;
+};
+
+struct CylinderShape {
+  float x = 0.0f;
+  float z = 0.0f;
+  float radius = 0.0f;
+};
+
+struct SceneGeometry {
+  bool has_box = false;
+  Vec3f box_min;
+  Vec3f box_max;
+  std::vector<SphereShape> spheres;
+  std::vector<CylinderShape> cylinders;
+};
+
+// The gaze the server's step used, in the server's screen units (normalized, origin top left).
+struct GazeOverlay {
+  gsph::v1::GazeMode mode = gsph::v1::GAZE_MODE_UNSPECIFIED;
+  float x = 0.0f;
+  float y = 0.0f;
+  float radius = 0.0f;       // fraction of viewport width
+  float ring_radius = 0.0f;  // fraction of viewport width; <= radius means no ring
+  float age_ms = 0.0f;
+  bool drawable() const;
+};
+
+inline constexpr std::uint8_t kClassSmall = 0;
+inline constexpr std::uint8_t kClassLarge = 1;
+
+struct DecodedFrame {
+  // Wire facts
+  std::uint64_t sequence = 0;
+  std::int64_t step = 0;
+  double sim_time = 0.0;
+  std::int64_t send_time_us = 0;
+  std::string scene;
+  gsph::v1::Method method = gsph::v1::METHOD_UNSPECIFIED;
+  bool paused = false;
+  std::uint32_t large_count = 0;
+  std::uint32_t small_count = 0;
+  gsph::v1::PhaseTimings timings;
+  float steps_per_second = 0.0f;
+  GazeOverlay gaze;
+  bool has_camera = false;
+  gsph::v1::CameraPose camera;  // the pose the server's gaze projection used
+  SceneGeometry geometry;
+  float radius_small = 0.0f;
+  float radius_large = 0.0f;
+  gsph::v1::PositionEncoding encoding = gsph::v1::POSITION_ENCODING_UNSPECIFIED;
+
+  // Per particle
+  std::vector<Vec3f> positions;
+  std::vector<std::uint8_t> classes;  // kClassSmall / kClassLarge
+  std::vector<float> speeds;          // empty when the frame carries no velocities
+
+  // Local facts
+  std::chrono::steady_clock::time_point arrival;  // when the bytes left the socket
+  std::size_t wire_bytes = 0;
+
+  std::size_t particleCount() const { return positions.size(); }
+};
+
+// Fills `out` from `frame`. On failure returns false, sets `error` to a human-readable reason and
+// leaves `out` in an unspecified state (callers decode into a fresh object and keep their last good
+// frame). Checks: protocol version, encoding, byte lengths against particle_count, class values,
+// finite positions, radii and quantization box.
+bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error);
+
+// Parses wire bytes and decodes; the same contract as decodeFrame.
+bool decodeFrameBytes(const void* data, std::size_t size, DecodedFrame& out, std::string& error);
+
+}  // namespace viewer

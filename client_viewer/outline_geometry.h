@@ -1,0 +1,40 @@
+// Line geometry for what the viewer draws as outlines: the box, sphere and cylinder obstacles (world
+// space) and the gaze circle and hysteresis ring (normalized device coordinates). Plain data, no GL,
+// so the shapes are unit tested.
+#pragma once
+
+#include <vector>
+
+#include "decoded_frame.h"
+
+namespace viewer {
+
+struct LineVertex {
+  float x, y, z;
+  float r, g, b;
+};
+using LineList = std::vector<LineVertex>;  // pairs of vertices, drawn as GL_LINES
+
+struct Rgb {
+  float r, g, b;
+};
+
+void appendBox(LineList& lines, const Vec3f& lo, const Vec3f& hi, Rgb colour);
+// Three great circles (one per axis plane).
+void appendSphere(LineList& lines, const SphereShape& sphere, Rgb colour);
+// A vertical cylinder from y_floor to y_roof: two circles and four vertical lines.
+void appendCylinder(LineList& lines, const CylinderShape& cylinder, float y_floor, float y_roof,
+                    Rgb colour);
+void appendGeometry(LineList& lines, const SceneGeometry& geometry);
+
+// A circle on the screen given as the protocol does: centre normalized 0..1 with the origin at the
+// top left, radius as a fraction of the viewport width. Output in NDC (x right, y up), z = 0.
+void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width, float aspect,
+                        Rgb colour, bool dashed = false);
+// The gaze circle and, when wider, the REMAIN ring around it, coloured by the gaze mode.
+void appendGazeOverlay(LineList& lines, const GazeOverlay& gaze, float aspect);
+
+// A small cross at a normalized screen point (the mouse gaze, when it is being sent).
+void appendScreenCross(LineList& lines, float x, float y, float size_of_width, float aspect, Rgb colour);
+
+}  // namespace viewer

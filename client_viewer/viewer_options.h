@@ -1,0 +1,38 @@
+// Command-line options of sph_viewer (CLI11). Every option is listed by --help.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "network_client.h"
+#include "particle_renderer.h"
+
+namespace viewer {
+
+struct ViewerOptions {
+  Endpoints endpoints;
+  std::string viewer_id;  // default "viewer-<pid>"
+  int width = 1280;
+  int height = 720;
+  bool mouse_gaze = false;
+  bool panel = true;
+  bool vsync = true;
+  ColourMode colour = ColourMode::kSizeClass;
+  // Camera: the scene's pose from the first frame unless --eye/--target are given.
+  std::optional<std::array<float, 3>> eye;
+  std::optional<std::array<float, 3>> target;
+  float fov_y_degrees = 45.0f;
+  // Headless / scripted runs
+  std::string snapshot;      // PNG path; implies a hidden window unless --visible
+  bool visible = true;       // resolved: false for --snapshot unless --visible was given
+  int frames = 0;            // server frames to show before the snapshot / exit (0: run until closed)
+  double timeout_s = 0.0;    // give up after this long (0: never; --snapshot defaults to 30)
+  bool report = false;       // print render rate and frame-arrival-to-pixels figures on exit
+};
+
+// Parses argv. Returns std::nullopt to go on, or an exit code (0 after --help, 2 on a bad option)
+// after printing to stdout/stderr.
+std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& options);
+
+}  // namespace viewer

@@ -1,0 +1,185 @@
+// The real viewer under a real (virtual) X display: pictures, poses, gaze, reconnects.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "camera_reference.h"
+#include "test_frames.h"
+#include "test_publisher.h"
+#include "viewer_process.h"
+
+using namespace viewer_test;
+using namespace std::chrono_literals;
+
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+constexpr auto kWait = 20s;
+
+// Two SMALL and two LARGE particles well apart, in front of a camera at (0, 0, 2.5).
+FrameSpec fourParticles() {
+  FrameSpec spec;
+  spec.particles = {{-0.5f, 0.3f, 0.0f, 0}, {0.5f, -0.3f, 0.2f, 0}, {0.5f, 0.3f, -0.2f, 1}, {-0.5f, -0.3f, 0.0f, 1}};
+  spec.radius_small = 0.06f;
+  spec.radius_large = 0.08f;
+  spec.box_lo = -0.8f;
+  spec.box_hi = 0.8f;
+  return spec;
+}
+
+std::vector<std::string> cameraArgs() {
+  return {"--eye", "0", "0", "2.5", "--target", "0", "0", "0", "--fov", "45",
+          "--width", std::to_string(kWidth), "--height", std::to_string(kHeight), "--no-panel"};
+}
+
+std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+viewer::RgbaImage loadPng(const std::string& path) {
+  viewer::RgbaImage image;
+  std::string error;
+  EXPECT_TRUE(viewer::readPng(path, image, error)) << error;
+  return image;
+}
+
+// What a pixel shows: background, a SMALL (blue) or LARGE (red) particle, or an outline (grey).
+// Shades along a sphere's rim change with sub-pixel shifts, so pictures are compared by this.
+int pixelKind(Colour c) {
+  const int brightest = std::max({c.r, c.g, c.b});
+  if (brightest < 45) return 0;
+  if (std::abs(c.r - c.b) < 30 && std::abs(c.r - c.g) < 30) return 3;
+  return c.b > c.r ? 1 : 2;
+}
+
+// Every pixel of `a` has a pixel of the same kind in `b` at most one pixel away.
+bool sameWithinOnePixel(const viewer::RgbaImage& a, const viewer::RgbaImage& b, std::string& where) {
+  if (a.width != b.width || a.height != b.height) return false;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      const int kind = pixelKind(pixel(a, x, y));
+      bool matched = false;
+      for (int dy = -1; dy <= 1 && !matched; ++dy) {
+        for (int dx = -1; dx <= 1 && !matched; ++dx) {
+          if (x + dx < 0 || y + dy < 0 || x + dx >= b.width || y + dy >= b.height) continue;
+          matched = pixelKind(pixel(b, x + dx, y + dy)) == kind;
+        }
+      }
+      if (!matched) {
+        where = std::to_string(x) + "," + std::to_string(y);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
+  const std::string dir = scratchDir();
+  FrameSpec spec = fourParticles();
+  spec.with_gaze = true;  // circle of 0.1 W around the screen centre
+  TestServer server(makeFrame(spec, 1));
+  auto viewer = startViewer(join(join(cameraArgs(), server.endpointArgs()),
+                                 {"--snapshot", dir + "/window.png", "--frames", "3", "--visible",
+                                  "--viewer-id", "pixels"}),
+                            dir + "/viewer.log");
+  const auto code = viewer->waitExit(60s);
+  ASSERT_TRUE(code.has_value()) << readFile(dir + "/viewer.log");
+  ASSERT_EQ(*code, 0) << readFile(dir + "/viewer.log");
+  gsph::v1::CameraPose pose;
+  ASSERT_TRUE(server.waitForPose([](const auto& p) { return p.viewer_id() == "pixels"; }, kWait, &pose));
+  const auto image = loadPng(dir + "/window.png");
+  ASSERT_EQ(image.width, kWidth);
+  ASSERT_EQ(image.height, kHeight);
+  for (const auto& p : spec.particles) {
+    const auto px = projectToPixel(pose.view().data(), pose.projection().data(), {p.x, p.y, p.z}, kWidth, kHeight);
+    const Colour c = pixel(image, static_cast<int>(px[0]), static_cast<int>(px[1]));
+    if (p.size_class == 0) {
+      EXPECT_TRUE(isBlue(c)) << "SMALL at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
+    } else {
+      EXPECT_TRUE(isRed(c)) << "LARGE at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
+    }
+  }
+  // Between the particles there is only background, so a picture that is all one colour fails.
+  EXPECT_TRUE(isDark(pixel(image, kWidth / 2, kHeight / 2 - 30)));
+  // A back corner of the box outline (light grey lines meet there).
+  const auto corner = projectToPixel(pose.view().data(), pose.projection().data(), {0.8, 0.8, -0.8}, kWidth, kHeight);
+  EXPECT_TRUE(anyNear(image, corner[0], corner[1], 2, [](Colour c) { return c.r > 150 && c.g > 150 && c.b > 150; }));
+  // Gaze circle, radius 0.1 W = 32 px about the centre: yellow on its rim, not at its centre.
+  auto yellow = [](Colour c) { return c.r > 180 && c.g > 160 && c.b < 90; };
+  EXPECT_TRUE(anyNear(image, kWidth / 2.0 + 32, kHeight / 2.0, 2, yellow));
+  EXPECT_TRUE(anyNear(image, kWidth / 2.0, kHeight / 2.0 - 32, 2, yellow));
+  EXPECT_FALSE(anyNear(image, kWidth / 2.0, kHeight / 2.0, 3, yellow));
+}
+
+TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
+  const std::string dir = scratchDir();
+  FrameSpec spec;
+  spec.particles = particleCloud(400, -0.6f, 0.6f);
+  spec.box_lo = -0.8f;
+  spec.box_hi = 0.8f;
+  std::vector<viewer::RgbaImage> images;
+  for (bool quantized : {false, true}) {
+    spec.quantized = quantized;
+    TestServer server(makeFrame(spec, 1));
+    const std::string png = dir + (quantized ? "/quantized.png" : "/float.png");
+    auto viewer = startViewer(join(join(cameraArgs(), server.endpointArgs()), {"--snapshot", png, "--frames", "2"}),
+                              dir + "/viewer.log");
+    const auto code = viewer->waitExit(60s);
+    ASSERT_TRUE(code.has_value() && *code == 0) << readFile(dir + "/viewer.log");
+    images.push_back(loadPng(png));
+  }
+  int coloured = 0;
+  for (int y = 0; y < images[0].height; ++y) {
+    for (int x = 0; x < images[0].width; ++x) coloured += isBlue(pixel(images[0], x, y)) || isRed(pixel(images[0], x, y));
+  }
+  EXPECT_GT(coloured, 2000);  // the cloud is really there
+  std::string where;
+  EXPECT_TRUE(sameWithinOnePixel(images[0], images[1], where)) << "float pixel " << where << " unmatched";
+  EXPECT_TRUE(sameWithinOnePixel(images[1], images[0], where)) << "quantized pixel " << where << " unmatched";
+}
+
+TEST(ViewerWindow, WaitsForServerAndTimesOutWithAPicture) {
+  const std::string dir = scratchDir();
+  // Endpoints of a server that is not there: a socket bound and closed again gives a free port.
+  std::string endpoint;
+  {
+    TestServer gone(makeFrame(fourParticles(), 1));
+    endpoint = gone.framesEndpoint();
+  }
+  auto viewer = startViewer({"--frames-endpoint", endpoint, "--snapshot", dir + "/waiting.png", "--timeout", "1.5",
+                             "--width", "320", "--height", "240"},
+                            dir + "/viewer.log");
+  const auto code = viewer->waitExit(60s);
+  ASSERT_TRUE(code.has_value());
+  EXPECT_EQ(*code, 3) << readFile(dir + "/viewer.log");
+  const auto image = loadPng(dir + "/waiting.png");
+  // The "waiting for server" line is light text across the middle of the picture.
+  int light = 0;
+  for (int x = 0; x < image.width; ++x) {
+    for (int y = image.height / 2 - 8; y < image.height / 2 + 8; ++y) light += pixel(image, x, y).r > 150;
+  }
+  EXPECT_GT(light, 50);
+}
+
+TEST(ViewerOptions, HelpListsEveryOptionAndBadOptionsFail) {
+  const std::string dir = scratchDir();
+  auto help = startViewer({"--help"}, dir + "/help.log");
+  ASSERT_EQ(help->waitExit(20s), std::optional<int>(0));
+  const std::string text = readFile(dir + "/help.log");
+  for (const char* option : {"--frames-endpoint", "--pose-endpoint", "--gaze-endpoint", "--control-endpoint",
+                             "--mouse-gaze", "--snapshot", "--frames", "--eye", "--target", "--report"}) {
+    EXPECT_NE(text.find(option), std::string::npos) << option;
+  }
+  auto bad = startViewer({"--width", "-5"}, dir + "/bad.log");
+  const auto code = bad->waitExit(20s);
+  ASSERT_TRUE(code.has_value());
+  EXPECT_NE(*code, 0);
+  auto half_camera = startViewer({"--eye", "0", "0", "1"}, dir + "/bad2.log");
+  EXPECT_EQ(half_camera->waitExit(20s), std::optional<int>(2));
+}
