@@ -4,8 +4,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 
+#include "bench/bench_compare.h"
 #include "bench/bench_output.h"
 #include "bench/bench_run.h"
 #include "scene/scene_loader.h"
@@ -27,7 +31,8 @@ std::vector<std::string> splitList(const std::string& text) {
 int main(int argc, char** argv) {
   CLI::App app{"sph_bench: run SPH scenes headless and report the thesis's measurements"};
   std::string scene_arg = "dambreak";
-  std::string method_arg = "regular";
+  std::string method_arg;
+  std::string gaze_path;
   std::string out_dir = "bench_out";
   std::string scene_dir = scene::defaultSceneDir();
   std::string export_format = "vtk";
@@ -36,7 +41,12 @@ int main(int argc, char** argv) {
   int export_every = 0;
   app.add_option("--scene", scene_arg, "scene name, path to a .json file, comma list, or 'all'")
       ->capture_default_str();
-  app.add_option("--method", method_arg, "method, or comma list (known: regular)")->capture_default_str();
+  app.add_option("--method", method_arg,
+                 "regular, surface, gaze, hybrid, a comma list, or 'all' (default: each scene's own)");
+  app.add_option("--gaze", gaze_path,
+                 "gaze recording (CSV: time_s,x,y,valid) replayed for gaze and hybrid, instead of "
+                 "the scene's own")
+      ->check(CLI::ExistingFile);
   app.add_option("--frames", frames, "frames (steps) to run; 0 = the scene's own count")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--threads", threads, "OpenMP threads")->check(CLI::Range(1, 256))->capture_default_str();
@@ -53,24 +63,50 @@ int main(int argc, char** argv) {
   try {
     std::vector<std::string> scenes = splitList(scene_arg);
     if (scene_arg == "all") scenes = scene::listScenes(scene_dir);
-    const std::vector<std::string> methods = splitList(method_arg);
+    std::vector<std::string> methods = splitList(method_arg);
+    if (method_arg == "all") methods = bench::knownMethods();
     if (scenes.empty()) throw std::invalid_argument("no scene named (--scene)");
-    if (methods.empty()) throw std::invalid_argument("no method named (--method)");
     for (const auto& m : methods) bench::requireKnownMethod(m);
-    // Load every scene before running any, so a typo fails fast and writes nothing.
+    // Load every scene and recording before running any, so a typo fails fast and writes nothing.
     std::vector<sph::Scene> loaded;
     for (const auto& s : scenes) loaded.push_back(scene::loadScene(s, scene_dir));
+    const auto methodsFor = [&](const sph::Scene& sc) {
+      return methods.empty() ? std::vector<std::string>{sc.method} : methods;
+    };
+    std::shared_ptr<gaze::GazeRecording> override_gaze;
+    if (!gaze_path.empty()) {
+      override_gaze = std::make_shared<gaze::GazeRecording>(gaze::readGazeRecording(gaze_path));
+    }
+    std::map<std::string, std::shared_ptr<gaze::GazeRecording>> scene_gaze;
+    std::size_t runs = 0;
+    for (const sph::Scene& sc : loaded) {
+      for (const auto& m : methodsFor(sc)) {
+        ++runs;
+        if ((m == "gaze" || m == "hybrid") && !override_gaze && !scene_gaze.contains(sc.name)) {
+          if (sc.gaze_recording.empty()) {
+            throw std::invalid_argument("scene '" + sc.name + "' names no gaze_recording for method '" +
+                                        m + "': pass --gaze FILE");
+          }
+          scene_gaze[sc.name] =
+              std::make_shared<gaze::GazeRecording>(gaze::readGazeRecording(sc.gaze_recording));
+        }
+      }
+    }
 
-    const bool matrix = loaded.size() * methods.size() > 1;
+    const bool matrix = runs > 1;
+    std::vector<bench::RunSummary> summaries;
     const auto format = export_format == "csv" ? bench::SnapshotFormat::Csv : bench::SnapshotFormat::Vtk;
     for (const sph::Scene& sc : loaded) {
-      for (const std::string& method : methods) {
+      for (const std::string& method : methodsFor(sc)) {
         const std::filesystem::path dir =
             matrix ? std::filesystem::path(out_dir) / sc.name / method : std::filesystem::path(out_dir);
         std::filesystem::create_directories(dir);
         bench::RunOptions options;
         options.frames = frames;
         options.threads = threads;
+        if (method == "gaze" || method == "hybrid") {
+          options.gaze = override_gaze ? override_gaze.get() : scene_gaze.at(sc.name).get();
+        }
         const int total_frames = frames > 0 ? frames : sc.frames;
         auto last_print = std::chrono::steady_clock::now();
         double total_ms = 0.0;
@@ -95,7 +131,13 @@ int main(int argc, char** argv) {
         bench::writeFramesCsv(run, (dir / "frames.csv").string());
         std::printf("%s\n  -> %s\n", bench::summaryText(run, summary).c_str(), dir.string().c_str());
         std::fflush(stdout);
+        summaries.push_back({run, summary});
       }
+    }
+    if (matrix) {
+      const std::filesystem::path table = std::filesystem::path(out_dir) / "comparison.md";
+      std::ofstream(table) << bench::comparisonMarkdown(summaries);
+      std::printf("comparison table -> %s\n", table.string().c_str());
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph_bench: error: %s\n", e.what());

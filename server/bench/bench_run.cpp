@@ -1,5 +1,8 @@
 #include "bench/bench_run.h"
 
+#include "bench/gaze_replay.h"
+#include "sph/camera.h"
+
 #include <algorithm>
 #include <cmath>
 #include <omp.h>
@@ -8,7 +11,7 @@
 namespace bench {
 
 const std::vector<std::string>& knownMethods() {
-  static const std::vector<std::string> methods = {"regular"};
+  static const std::vector<std::string> methods = sph::methodNames();
   return methods;
 }
 
@@ -57,7 +60,17 @@ RunResult runScene(const sph::Scene& scene, const std::string& method, const Run
   if (options.threads < 1) throw std::invalid_argument("threads must be >= 1");
   omp_set_num_threads(options.threads);
 
-  sph::Simulation sim(scene, sph::SizeClass::Small);
+  sph::Method m = sph::Method::Regular;
+  sph::methodByName(method, m);
+  const bool needs_gaze = m == sph::Method::Gaze || m == sph::Method::Hybrid;
+  if (needs_gaze && (options.gaze == nullptr || options.gaze->samples.empty())) {
+    throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" +
+                                scene.name + "' names none; pass --gaze FILE)");
+  }
+  sph::Simulation sim(scene, sph::startClass(m));
+  auto adaptive = sph::makeAdaptiveController(m, scene.adaptive, sph::cameraFromSpec(scene.camera));
+  sph::AdaptiveController* controller = adaptive.get();
+  sim.setAdaptiveStep(std::move(adaptive));
   RunResult result;
   result.scene = scene.name;
   result.method = method;
@@ -67,8 +80,14 @@ RunResult runScene(const sph::Scene& scene, const std::string& method, const Run
   result.mass_start = sim.particles().totalMass();
   result.records.reserve(result.frames);
   for (int f = 0; f < result.frames; ++f) {
+    if (controller && needs_gaze) controller->setGaze(gazeInputAt(*options.gaze, sim.time()));
     sim.step();
     FrameRecord r;
+    if (controller) {
+      r.splits = controller->lastStats().splits;
+      r.merges = controller->lastStats().merges;
+      r.gaze_mode = controller->lastStats().gaze_mode;
+    }
     r.frame = f + 1;
     r.sim_time = sim.time();
     r.ms = sim.lastTimings();

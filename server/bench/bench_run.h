@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "gaze/gaze_recording.h"
+#include "sph/adaptive/adaptive_controller.h"
 #include "sph/scene.h"
 #include "sph/simulation.h"
 
@@ -22,6 +24,9 @@ struct FrameRecord {
   double max_density_ratio = 0.0;
   std::size_t nan_values = 0;
   std::size_t outside_box = 0;
+  int splits = 0;  // adaptive step of this frame
+  int merges = 0;
+  sph::GazeMode gaze_mode = sph::GazeMode::None;
 };
 
 struct RunResult {
@@ -39,15 +44,18 @@ struct RunResult {
 struct RunOptions {
   int frames = 0;  // 0: the scene's own count
   int threads = 2;
+  // Drives gaze and hybrid; required for them (runScene throws without one).
+  const gaze::GazeRecording* gaze = nullptr;
   // Called after every frame (progress, snapshots); may be empty.
   std::function<void(const sph::Simulation&, const FrameRecord&)> on_frame;
 };
 
-// Methods this build knows; `regular` is all SMALL with no adaptive step.
+// Methods this build knows (sph::methodNames); `regular` is all SMALL with no adaptive step.
 const std::vector<std::string>& knownMethods();
 // Throws std::invalid_argument naming the known methods when `method` is not one of them.
 void requireKnownMethod(const std::string& method);
 
+// The scene's method settings (scene.adaptive) apply; gaze and hybrid need options.gaze.
 RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options);
 
 // Health of the particle set at the current instant (used per frame and by tests).

@@ -144,6 +144,37 @@ void readCamera(const Context& ctx, const json& cam, sph::CameraSpec& c) {
   }
 }
 
+// The "adaptive" object: every AdaptiveConfig field by name, then AdaptiveConfig::validate.
+void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
+  const std::map<std::string, double*> numbers = {
+      {"alpha", &c.alpha},
+      {"beta", &c.beta},
+      {"gamma", &c.gamma},
+      {"threshold", &c.threshold},
+      {"surface_normal_scale", &c.surface_normal_scale},
+      {"gaze_radius", &c.gaze_radius},
+      {"gaze_ring_radius", &c.gaze_ring_radius},
+      {"gaze_stale_s", &c.gaze_stale_s},
+      {"gaze_hold_s", &c.gaze_hold_s},
+  };
+  std::set<std::string> allowed = {"surface_includes_walls"};
+  for (const auto& [name, field] : numbers) allowed.insert(name);
+  ctx.allowOnly(a, "adaptive", allowed);
+  for (const auto& [name, field] : numbers) {
+    if (a.contains(name)) *field = ctx.number(a[name], "adaptive." + name);
+  }
+  if (a.contains("surface_includes_walls")) {
+    if (!a["surface_includes_walls"].is_boolean()) ctx.fail("adaptive.surface_includes_walls", "must be true or false");
+    c.surface_includes_walls = a["surface_includes_walls"].get<bool>();
+  }
+  try {
+    c.validate();
+  } catch (const std::invalid_argument& e) {
+    ctx.fail("adaptive", e.what());
+  }
+}
+
+
 }  // namespace
 
 std::string defaultSceneDir() {
@@ -180,6 +211,9 @@ sph::Scene loadScene(const std::string& name_or_path, const std::string& dir) {
   text << in.rdbuf();
   sph::Scene s = parseScene(text.str(), path.string());
   if (s.name.empty()) s.name = path.stem().string();
+  if (!s.gaze_recording.empty() && fs::path(s.gaze_recording).is_relative()) {
+    s.gaze_recording = (path.parent_path() / s.gaze_recording).string();
+  }
   return s;
 }
 
@@ -193,7 +227,7 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source) {
   }
   ctx.allowOnly(doc, "", {"name", "description", "preset", "params", "box", "box_changes",
                           "moving_walls", "spheres", "cylinders", "water", "large_particles",
-                          "frames", "camera"});
+                          "frames", "camera", "method", "adaptive", "gaze_recording"});
   sph::Scene s;
   s.source = source;
   if (doc.contains("name")) {
@@ -283,6 +317,20 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source) {
   if (doc.contains("large_particles")) s.large_particles = ctx.positiveInt(doc["large_particles"], "large_particles");
   if (doc.contains("frames")) s.frames = ctx.positiveInt(doc["frames"], "frames");
   if (doc.contains("camera")) readCamera(ctx, doc["camera"], s.camera);
+  if (doc.contains("method")) {
+    sph::Method m;
+    if (!doc["method"].is_string() || !sph::methodByName(doc["method"].get<std::string>(), m)) {
+      ctx.fail("method", "unknown method (known: regular, surface, gaze, hybrid)");
+    }
+    s.method = doc["method"].get<std::string>();
+  }
+  if (doc.contains("adaptive")) readAdaptive(ctx, doc["adaptive"], s.adaptive);
+  if (doc.contains("gaze_recording")) {
+    if (!doc["gaze_recording"].is_string() || doc["gaze_recording"].get<std::string>().empty()) {
+      ctx.fail("gaze_recording", "must be a file name");
+    }
+    s.gaze_recording = doc["gaze_recording"].get<std::string>();
+  }
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "sph/fluid_stages.h"
 
 #include <cmath>
+#include <limits>
 
 #include "sph/collision.h"
 
@@ -40,7 +41,7 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 }
 
 void computeAccelerations(const SimParams& params, const KernelTable& kernels,
-                          const NeighborGrid& grid, ParticleSet& p) {
+                          const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
   const float mu = static_cast<float>(params.viscosity);
   const float sigma = static_cast<float>(params.surface_tension);
   const float threshold = static_cast<float>(params.surfaceThreshold());
@@ -62,6 +63,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     Vec3 normal = Vec3::Zero();         // n = grad c, eq. (3.17)
     // The colour field sums over every j including i (3.16); only the Laplacian has a self term.
     float colour_laplacian = p.volume[i] * poly6Laplacian(ki, 0.0f);
+    float surface_hop = std::numeric_limits<float>::infinity();
 
     for (std::uint32_t j : grid.neighbors(i)) {
       const Vec3 r = xi - p.position[j];
@@ -88,6 +90,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       // Colour field gradient and Laplacian, eqs. (3.16)-(3.18).
       normal += (volj * cgrad) * r;
       colour_laplacian += volj * clap;
+      if (propagate_surface_distance) surface_hop = std::min(surface_hop, p.surface_distance[j] + rl);
     }
 
     Vec3 acc = pressure_acc + (mu / rhoi) * viscous + gravity;  // gravity: f = rho g, eq. (3.15)
@@ -98,6 +101,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     }
     p.acceleration[i] = acc;
     p.normal_length[i] = normal_len;
+    if (propagate_surface_distance) p.surface_hop[i] = surface_hop;
   }
 }
 

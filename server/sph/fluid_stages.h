@@ -22,9 +22,13 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
                             const NeighborGrid& grid, ParticleSet& particles);
 
 // Acceleration a = F / rho from pressure (3.13), viscosity (3.14), gravity (3.15) and surface
-// tension (3.16)-(3.19) where |n| >= l (3.36). Also stores |n| per particle.
+// tension (3.16)-(3.19) where |n| >= l (3.36). Also stores |n| per particle. With
+// `propagate_surface_distance`, also one hop of the surface distance the adaptive step keeps:
+// surface_hop[i] = min over neighbours j of surface_distance[j] + |r_ij| (fused here because this
+// loop already has every pair's distance).
 void computeAccelerations(const SimParams& params, const KernelTable& kernels,
-                          const NeighborGrid& grid, ParticleSet& particles);
+                          const NeighborGrid& grid, ParticleSet& particles,
+                          bool propagate_surface_distance = false);
 
 // Semi-implicit Euler, eqs. (3.21)-(3.22), then collisions with obstacles and the box at `box`.
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,

@@ -1,5 +1,6 @@
 #include "sph/particles.h"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -28,6 +29,8 @@ std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const 
   normal_length.push_back(0.0f);
   pressure_term.push_back(0.0f);
   volume.push_back(0.0f);
+  surface_distance.push_back(std::numeric_limits<float>::infinity());
+  surface_hop.push_back(std::numeric_limits<float>::infinity());
   return new_id;
 }
 

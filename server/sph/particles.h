@@ -60,11 +60,16 @@ class ParticleSet {
   // Per-particle factors of the pair sums, set with the density so the force loop divides less:
   std::vector<float> pressure_term;     // p / rho^2, eq. (3.13)
   std::vector<float> volume;            // m / rho, eqs. (3.14), (3.16)
+  // Adaptive step, surface criterion: distance to the surface or a boundary, d in (3.45), kept
+  // from step to step (infinity until reached), and this step's one-hop update of it.
+  std::vector<float> surface_distance;
+  std::vector<float> surface_hop;
 
   template <typename F>
   void forEachAttribute(F&& f) {
     f(id); f(size_class); f(mass); f(radius); f(support); f(position); f(velocity);
     f(acceleration); f(density); f(pressure); f(normal_length); f(pressure_term); f(volume);
+    f(surface_distance); f(surface_hop);
   }
 
  private:

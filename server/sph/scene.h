@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "sph/adaptive/method.h"
 #include "sph/boundary.h"
 #include "sph/params.h"
 #include "sph/particles.h"
@@ -35,6 +36,11 @@ struct Scene {
   int large_particles = 10000;  // adaptive methods start with this many LARGE particles
   int frames = 900;             // steps in a full-length run
   CameraSpec camera;
+  // The method a run uses when none is named (regular, surface, gaze, hybrid), its settings, and
+  // the gaze recording that drives gaze and hybrid headless (resolved against the scene's folder).
+  std::string method = "regular";
+  AdaptiveConfig adaptive;
+  std::string gaze_recording;
 };
 
 // Which class the water starts in: adaptive methods start LARGE; the regular method fills the same

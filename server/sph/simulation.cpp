@@ -41,7 +41,7 @@ void Simulation::step() {
   timings_.density_pressure_ms = msSince(t);
 
   t = Clock::now();
-  computeAccelerations(scene_.params, kernels_, grid_, particles_);
+  computeAccelerations(scene_.params, kernels_, grid_, particles_, track_surface_distance_);
   const double next_time = time_ + scene_.params.time_step;
   integrateAndCollide(scene_.params, scene_.boundary, scene_.boundary.stateAt(next_time), particles_);
   timings_.accel_integrate_collide_ms = msSince(t);

@@ -39,6 +39,9 @@ class Simulation {
              std::size_t capacity = ParticleSet::kDefaultCapacity);
 
   void setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) { adaptive_ = std::move(step); }
+  // The surface criterion's distance field advances one neighbour hop per step inside the force
+  // loop (see computeAccelerations); adaptive steps that use it switch it on.
+  void setSurfaceDistanceTracking(bool on) { track_surface_distance_ = on; }
 
   void step();
 
@@ -64,6 +67,7 @@ class Simulation {
   PhaseTimings timings_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
+  bool track_surface_distance_ = false;
 };
 
 }  // namespace sph

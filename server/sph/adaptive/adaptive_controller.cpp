@@ -60,6 +60,9 @@ GazeMode AdaptiveController::gazeMode() const {
 
 void AdaptiveController::apply(Simulation& sim) {
   requireTwoToOneMasses(sim.params());
+  // Every method may need the surface distance field (gaze falls back to surface when the gaze is
+  // lost), so keep it warm: one min per pair in the force loop.
+  sim.setSurfaceDistanceTracking(true);
   const ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   decision_.resize(n);
@@ -69,7 +72,7 @@ void AdaptiveController::apply(Simulation& sim) {
   const bool use_gaze = mode == GazeMode::Tracking || mode == GazeMode::Holding;
   const bool use_surface = method_ == Method::Surface || method_ == Method::Hybrid || !use_gaze;
   if (use_surface) {
-    decideBySurface(sim, config_, surface_distance_, surface_distance_next_, decision_);
+    decideBySurface(sim, config_, decision_);
   }
   if (use_gaze) {
     if (method_ == Method::Hybrid) {

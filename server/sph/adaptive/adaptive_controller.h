@@ -55,8 +55,6 @@ class AdaptiveController : public AdaptiveStep {
 
   std::vector<std::int8_t> decision_;
   std::vector<std::int8_t> gaze_decision_;
-  std::vector<float> surface_distance_;
-  std::vector<float> surface_distance_next_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint8_t> keep_;
   std::vector<std::uint32_t> split_slot_;

@@ -27,10 +27,8 @@ float boundaryDistance(const Vec3& x, const BoxState& box, const Boundary& bound
 
 }  // namespace
 
-void decideBySurface(const Simulation& sim, const AdaptiveConfig& config,
-                     std::vector<float>& distance, std::vector<float>& scratch,
-                     std::span<std::int8_t> out) {
-  const ParticleSet& p = sim.particles();
+void decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out) {
+  ParticleSet& p = sim.particles();
   const NeighborGrid& grid = sim.grid();
   const std::size_t n = p.size();
   const float surface_threshold =
@@ -38,26 +36,25 @@ void decideBySurface(const Simulation& sim, const AdaptiveConfig& config,
   const BoxState box = sim.boxNow();
   const Boundary& boundary = sim.scene().boundary;
   const float inf = std::numeric_limits<float>::infinity();
-  distance.resize(n);
-  scratch.resize(n);
 
-  // d_i = 0 on the surface (3.44); else the distance to a boundary when walls count, else unknown.
   // N_max is taken per size class: the classes have different neighbour counts by design (x_SMALL
   // 50, x_LARGE 20, table 3.2), and one global maximum would make every LARGE particle look
   // "isolated" next to SMALL ones, so splitting would creep inwards step after step.
   float max_pressure = 0.0f;
+  float max_distance = 0.0f;
   std::uint32_t max_neighbors_small = 0;
   std::uint32_t max_neighbors_large = 0;
 #pragma omp parallel for schedule(static) \
-    reduction(max : max_pressure, max_neighbors_small, max_neighbors_large)
+    reduction(max : max_pressure, max_distance, max_neighbors_small, max_neighbors_large)
   for (std::size_t i = 0; i < n; ++i) {
-    float d = inf;
+    float d = p.surface_hop[i];
     if (p.normal_length[i] >= surface_threshold) {
-      d = 0.0f;
+      d = 0.0f;  // a surface particle, (3.44)
     } else if (config.surface_includes_walls) {
-      d = boundaryDistance(p.position[i], box, boundary);
+      d = std::min(d, boundaryDistance(p.position[i], box, boundary));
     }
-    distance[i] = d;
+    p.surface_distance[i] = d;
+    if (d < inf) max_distance = std::max(max_distance, d);
     max_pressure = std::max(max_pressure, p.pressure[i]);
     if (p.size_class[i] == SizeClass::Small) {
       max_neighbors_small = std::max(max_neighbors_small, grid.neighborCount(i));
@@ -66,44 +63,22 @@ void decideBySurface(const Simulation& sim, const AdaptiveConfig& config,
     }
   }
 
-  // Propagate: d_i = min(d_i, d_j + |r_ij|) over neighbours, Jacobi style (reads one buffer, writes
-  // the other) so the result does not depend on the order particles are visited in.
-  for (int hop = 0; hop < config.surface_hops; ++hop) {
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      float d = distance[i];
-      const Vec3 xi = p.position[i];
-      for (std::uint32_t j : grid.neighbors(i)) {
-        const float dj = distance[j];
-        if (dj < d) d = std::min(d, dj + (xi - p.position[j]).norm());
-      }
-      scratch[i] = d;
-    }
-    distance.swap(scratch);
-  }
-
-  float max_distance = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : max_distance)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (distance[i] < inf) max_distance = std::max(max_distance, distance[i]);
-  }
-
-  // Character field, eq. (3.45), and the decision, eq. (3.46). Particles the propagation did not
-  // reach are deeper than every reached one: they take d = dmax.
+  // Character field, eq. (3.45), and the decision, eq. (3.46). Particles the distance field has
+  // not reached yet are deeper than every reached one: they take d = dmax.
   const float alpha = static_cast<float>(config.alpha);
   const float beta = static_cast<float>(config.beta);
   const float gamma = static_cast<float>(config.gamma);
   const float inv_weights = 1.0f / (alpha + beta + gamma);
-  const float inv_dmax = max_distance > 0.0f ? 1.0f / max_distance : 0.0f;
-  const float inv_fmax = max_pressure > 0.0f ? 1.0f / max_pressure : 0.0f;
-  const auto inverse = [](std::uint32_t v) { return v > 0 ? 1.0f / static_cast<float>(v) : 0.0f; };
-  const float inv_nmax[kSizeClassCount] = {inverse(max_neighbors_small),
-                                           inverse(max_neighbors_large)};
+  const auto inverse = [](float v) { return v > 0.0f ? 1.0f / v : 0.0f; };
+  const float inv_dmax = inverse(max_distance);
+  const float inv_fmax = inverse(max_pressure);
+  const float inv_nmax[kSizeClassCount] = {inverse(static_cast<float>(max_neighbors_small)),
+                                           inverse(static_cast<float>(max_neighbors_large))};
   const float split_below = static_cast<float>(config.threshold);
   const float merge_from = 2.0f * split_below;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const float d = std::min(distance[i], max_distance);
+    const float d = std::min(p.surface_distance[i], max_distance);
     const float f = std::max(p.pressure[i], 0.0f);
     const float cf = (alpha * d * inv_dmax + beta * (1.0f - f * inv_fmax) +
                       gamma * static_cast<float>(grid.neighborCount(i)) *

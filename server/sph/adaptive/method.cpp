@@ -72,7 +72,6 @@ void AdaptiveConfig::validate() const {
   }
   requireRange("threshold", threshold, 0.0, 1.0);
   requireRange("surface_normal_scale", surface_normal_scale, 0.0, 100.0);
-  requireRange("surface_hops", surface_hops, 1, 64);
   requireRange("gaze_radius", gaze_radius, 0.0, 2.0);
   requireRange("gaze_ring_radius", gaze_ring_radius, 0.0, 2.0);
   if (gaze_ring_radius < gaze_radius) {

@@ -32,9 +32,6 @@ struct AdaptiveConfig {
   // the fluid reaches about 1.2 l, and at scale 1 (or 1.5) the split band creeps inwards step by
   // step; 2 stops that on a resting pool (tests/adaptive) and still finds the free surface.
   double surface_normal_scale = 2.0;
-  // d in (3.45) is propagated from the surface over the neighbour lists for this many hops (a graph
-  // distance, an upper bound of the Euclidean one); particles further in all count as d = dmax.
-  int surface_hops = 4;
   // Gaze circle radius as a fraction of the viewport width (DESIGN.md: 2.5 degrees at 600 mm from
   // a 531 mm wide screen, or the thesis's "5 % view"; both about 0.05).
   double gaze_radius = 0.05;

@@ -133,6 +133,8 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     p.pressure[c] = p.pressure[i];
     p.normal_length[c] = p.normal_length[i];
     p.pressure_term[c] = p.pressure_term[i];
+    p.surface_distance[c] = p.surface_distance[i];
+    p.surface_hop[c] = p.surface_hop[i];
     for (std::size_t k : {i, c}) {
       p.size_class[k] = SizeClass::Small;
       p.mass[k] = small_mass;
@@ -165,6 +167,8 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     p.pressure[i] = 0.5f * (p.pressure[i] + p.pressure[k]);
     p.normal_length[i] = std::max(p.normal_length[i], p.normal_length[k]);
     p.pressure_term[i] = 0.5f * (p.pressure_term[i] + p.pressure_term[k]);
+    p.surface_distance[i] = std::min(p.surface_distance[i], p.surface_distance[k]);
+    p.surface_hop[i] = std::min(p.surface_hop[i], p.surface_hop[k]);
     p.size_class[i] = SizeClass::Large;
     p.mass[i] = large_mass;
     p.radius[i] = large_radius;

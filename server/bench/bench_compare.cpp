@@ -1,0 +1,131 @@
+#include "bench/bench_compare.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+
+namespace bench {
+
+namespace {
+
+template <typename T>
+void addUnique(std::vector<T>& list, const T& value) {
+  if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+}  // namespace
+
+std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
+  std::vector<std::string> scenes;
+  std::vector<std::string> methods;
+  for (const auto& r : runs) {
+    addUnique(scenes, r.run.scene);
+    addUnique(methods, r.run.method);
+  }
+  const auto find = [&](const std::string& scene, const std::string& method) -> const RunSummary* {
+    for (const auto& r : runs) {
+      if (r.run.scene == scene && r.run.method == method) return &r;
+    }
+    return nullptr;
+  };
+  struct Row {
+    const char* label;
+    std::function<std::string(const RunSummary&)> value;
+  };
+  const std::vector<Row> rows = {
+      {"Neighbour search (ms)", [](const RunSummary& r) { return fixed(r.summary.neighbor.mean, 3); }},
+      {"Density & Pressure (ms)",
+       [](const RunSummary& r) { return fixed(r.summary.density_pressure.mean, 3); }},
+      {"Acceleration, Integration & Collision (ms)",
+       [](const RunSummary& r) { return fixed(r.summary.accel_integrate_collide.mean, 3); }},
+      {"Adaptive step (ms)", [](const RunSummary& r) { return fixed(r.summary.adaptive.mean, 3); }},
+      {"**Total (ms)**",
+       [](const RunSummary& r) {
+         std::string bold = "**";
+         bold += fixed(r.summary.total.mean, 3);
+         bold += "**";
+         return bold;
+       }},
+      {"Total p95 (ms)", [](const RunSummary& r) { return fixed(r.summary.total.p95, 3); }},
+      {"Adaptive share of step",
+       [](const RunSummary& r) {
+         const double t = r.summary.total.mean;
+         return t > 0.0 ? fixed(100.0 * r.summary.adaptive.mean / t, 1) + " %" : std::string("-");
+       }},
+      {"Steps per second", [](const RunSummary& r) { return fixed(r.summary.steps_per_s, 1); }},
+      {"Mean LARGE / SMALL",
+       [](const RunSummary& r) {
+         return fixed(r.summary.mean_large, 0) + " / " + fixed(r.summary.mean_small, 0);
+       }},
+      {"Mean neighbours", [](const RunSummary& r) { return fixed(r.summary.mean_neighbors, 1); }},
+      {"rho/rho0 mean / max",
+       [](const RunSummary& r) {
+         return fixed(r.summary.mean_density_ratio, 2) + " / " + fixed(r.summary.max_density_ratio, 1);
+       }},
+      {"NaN / outside box",
+       [](const RunSummary& r) {
+         return std::to_string(r.summary.nan_values) + " / " + std::to_string(r.summary.outside_box);
+       }},
+      {"Mass start = end",
+       [](const RunSummary& r) { return std::string(r.run.mass_start == r.run.mass_end ? "yes" : "NO"); }},
+  };
+
+  std::string md = "# Methods compared (thesis table 5.x layout)\n\n";
+  md += "Mean milliseconds per step and phase; the neighbour search is shown on its own (the thesis "
+        "folds it into the density row).\n";
+  for (const std::string& scene : scenes) {
+    md += "\n## ";
+    md += scene;
+    md += "\n\n| phase |";
+    for (const auto& m : methods) {
+      md += ' ';
+      md += m;
+      md += " |";
+    }
+    md += "\n|---|";
+    for (std::size_t k = 0; k < methods.size(); ++k) md += "---:|";
+    md += "\n";
+    for (const Row& row : rows) {
+      md += std::string("| ") + row.label + " |";
+      for (const auto& m : methods) {
+        const RunSummary* r = find(scene, m);
+        md += ' ';
+        md += r ? row.value(*r) : std::string("-");
+        md += " |";
+      }
+      md += "\n";
+    }
+    const RunSummary* regular = find(scene, "regular");
+    if (regular && regular->summary.total.mean > 0.0) {
+      md += "| Total / regular |";
+      for (const auto& m : methods) {
+        const RunSummary* r = find(scene, m);
+        md += ' ';
+        md += r ? fixed(r->summary.total.mean / regular->summary.total.mean, 2) : std::string("-");
+        md += " |";
+      }
+      md += "\n";
+    }
+    if (!runs.empty()) {
+      const RunSummary* any = find(scene, methods.front());
+      if (any) {
+        md += '\n';
+        md += std::to_string(any->run.frames);
+        md += " frames, ";
+        md += std::to_string(any->run.threads);
+        md += " threads, preset ";
+        md += any->run.preset;
+        md += ".\n";
+      }
+    }
+  }
+  return md;
+}
+
+}  // namespace bench

@@ -1,0 +1,20 @@
+// The thesis's table 5.x layout for a matrix run: per scene, mean ms per phase (rows) per method
+// (columns), steps per second and particle counts, plus each method's total as a ratio of regular.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bench/bench_output.h"
+
+namespace bench {
+
+struct RunSummary {
+  RunResult run;
+  Summary summary;
+};
+
+// Markdown text; scenes and methods in the order they first appear in `runs`.
+std::string comparisonMarkdown(const std::vector<RunSummary>& runs);
+
+}  // namespace bench
