@@ -1,6 +1,6 @@
-// Particles as shaded sphere impostors: one camera-facing quad per particle (instanced), the
-// fragment shader discards outside the disc, shades a sphere normal and writes the sphere's depth,
-// so overlapping particles intersect correctly. Radius per class from the frame (true size).
+// Particles as shaded sphere impostors: one camera-facing quad per particle (instanced) placed at
+// the sphere's front; the fragment shader discards outside the disc and shades a sphere normal.
+// Radius per class from the frame (true size on screen).
 #pragma once
 
 #include <Eigen/Core>
