@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "app/adaptive_parameters.h"
 #include "net/frame_encoder.h"
 #include "scene/scene_loader.h"
 
@@ -15,23 +16,6 @@ namespace {
 
 using gsph::v1::ControlReply;
 using gsph::v1::ErrorCode;
-
-// Settable parameter names and where each lives. Booleans are 0 or 1.
-double* adaptiveField(sph::AdaptiveConfig& c, const std::string& name) {
-  static const std::map<std::string, double sph::AdaptiveConfig::*> fields = {
-      {"gaze_radius", &sph::AdaptiveConfig::gaze_radius},
-      {"gaze_ring_radius", &sph::AdaptiveConfig::gaze_ring_radius},
-      {"gaze_ring", &sph::AdaptiveConfig::gaze_ring_radius},  // the schema comment's short name
-      {"gaze_stale_s", &sph::AdaptiveConfig::gaze_stale_s},
-      {"gaze_hold_s", &sph::AdaptiveConfig::gaze_hold_s},
-      {"alpha", &sph::AdaptiveConfig::alpha},
-      {"beta", &sph::AdaptiveConfig::beta},
-      {"gamma", &sph::AdaptiveConfig::gamma},
-      {"threshold", &sph::AdaptiveConfig::threshold},
-  };
-  const auto it = fields.find(name);
-  return it == fields.end() ? nullptr : &(c.*(it->second));
-}
 
 bool asBool(double v, bool& out) {
   if (v != 0.0 && v != 1.0) return false;
@@ -47,10 +31,10 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
   RunSettings settings = target.settings;
   for (const auto& [name, value] : request.values()) {
     if (!std::isfinite(value)) return "parameter '" + name + "' is not finite";
-    if (double* field = adaptiveField(config, name)) {
-      *field = value;
-    } else if (name == "surface_includes_walls") {
-      if (!asBool(value, config.surface_includes_walls)) return name + " must be 0 or 1";
+    bool adaptive = false;
+    const std::string error = setAdaptiveParameter(config, name, value, adaptive);
+    if (adaptive) {
+      if (!error.empty()) return error;
     } else if (name == "publish_hz") {
       if (value <= 0.0 || value > kMaxPublishHz) {
         return "publish_hz must be in (0, " + std::to_string(static_cast<int>(kMaxPublishHz)) + "]";
@@ -61,7 +45,7 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
     } else if (name == "free_run") {
       if (!asBool(value, settings.free_run)) return name + " must be 0 or 1";
     } else {
-      return "unknown parameter '" + name + "'";
+      return error;
     }
   }
   try {
@@ -102,16 +86,9 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
     spdlog::debug("cannot list scenes: {}", e.what());
   }
   auto& params = *status.mutable_parameters();
-  const sph::AdaptiveConfig& c = s.config();
-  params["gaze_radius"] = c.gaze_radius;
-  params["gaze_ring_radius"] = c.gaze_ring_radius;
-  params["gaze_stale_s"] = c.gaze_stale_s;
-  params["gaze_hold_s"] = c.gaze_hold_s;
-  params["alpha"] = c.alpha;
-  params["beta"] = c.beta;
-  params["gamma"] = c.gamma;
-  params["threshold"] = c.threshold;
-  params["surface_includes_walls"] = c.surface_includes_walls ? 1.0 : 0.0;
+  std::map<std::string, double> adaptive;
+  adaptiveParameters(s.config(), adaptive);
+  for (const auto& [name, value] : adaptive) params[name] = value;
   params["publish_hz"] = target.settings.publish_hz;
   params["quantized"] = target.settings.quantized ? 1.0 : 0.0;
   params["free_run"] = target.settings.free_run ? 1.0 : 0.0;
@@ -143,7 +120,7 @@ ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& tar
         break;
       case gsph::v1::Control::kLoadScene:
         try {
-          session.load(request.load_scene().scene(), session.method());
+          session.load(request.load_scene().scene(), session.method());  // names only
           effects.restart_clock = true;
         } catch (const scene::SceneError& e) {
           fail(reply, gsph::v1::ERROR_CODE_UNKNOWN_SCENE, e.what());

@@ -6,6 +6,9 @@
 #include <csignal>
 #include <ctime>
 #include <exception>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "app/server.h"
 #include "scene/scene_loader.h"
@@ -14,7 +17,9 @@ namespace {
 
 struct CliOptions {
   app::ServerOptions server;
-  std::string method = "gaze";
+  std::string method;  // empty: the scene's default method
+  std::map<std::string, double> gaze;  // --gaze-* options given
+  std::vector<std::string> adaptive;   // --adaptive name=value
   std::string gaze_socket = "sub";
   std::string pose_socket = "sub";
   std::string log_level = "info";
@@ -28,7 +33,8 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->capture_default_str();
   cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")
       ->capture_default_str();
-  cli.add_option("--method", o.method, "regular, surface, gaze or hybrid")->capture_default_str();
+  cli.add_option("--method", o.method, "regular, surface, gaze or hybrid (default: the scene's method)")
+      ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
   cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
   cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
       ->check(CLI::Range(1e-3, app::kMaxPublishHz))->capture_default_str();
@@ -49,14 +55,23 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->check(CLI::IsMember({"sub", "pull"}))->capture_default_str();
   cli.add_option("--camera-source", sim.camera_source,
                  "viewer_id whose camera pose drives the gaze projection (default: the most recent pose)");
-  cli.add_option("--gaze-radius", sim.adaptive.gaze_radius, "gaze circle radius, fraction of viewport width")
-      ->capture_default_str();
-  cli.add_option("--gaze-ring-radius", sim.adaptive.gaze_ring_radius,
-                 "outer radius of the hysteresis ring, same units")->capture_default_str();
-  cli.add_option("--gaze-stale-s", sim.adaptive.gaze_stale_s, "sample age after which the gaze is held")
-      ->capture_default_str();
-  cli.add_option("--gaze-hold-s", sim.adaptive.gaze_hold_s, "sample age after which surface refinement takes over")
-      ->capture_default_str();
+  // Adaptive settings override the scene's "adaptive" block (defaults shown are the library's).
+  const sph::AdaptiveConfig defaults;
+  const auto gaze_option = [&](const char* flag, const char* name, double fallback, const char* help) {
+    cli.add_option_function<double>(flag, [&o, name](double v) { o.gaze[name] = v; }, help)
+        ->default_str(std::to_string(fallback));
+  };
+  gaze_option("--gaze-radius", "gaze_radius", defaults.gaze_radius,
+              "gaze circle radius, fraction of viewport width");
+  gaze_option("--gaze-ring-radius", "gaze_ring_radius", defaults.gaze_ring_radius,
+              "outer radius of the hysteresis ring, same units");
+  gaze_option("--gaze-stale-s", "gaze_stale_s", defaults.gaze_stale_s,
+              "sample age (s) after which the last gaze point is held");
+  gaze_option("--gaze-hold-s", "gaze_hold_s", defaults.gaze_hold_s,
+              "sample age (s) after which surface refinement takes over");
+  cli.add_option("--adaptive", o.adaptive,
+                 "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
+                 "surface_includes_walls, gaze_*); repeatable");
   cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
       ->check(CLI::NonNegativeNumber)->capture_default_str();
   cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
@@ -72,9 +87,24 @@ int main(int argc, char** argv) {
   CLI11_PARSE(cli, argc, argv);
   spdlog::set_level(spdlog::level::from_str(o.log_level));
 
-  if (!sph::methodByName(o.method, o.server.sim.method)) {
-    spdlog::error("unknown method '{}' (regular, surface, gaze, hybrid)", o.method);
-    return 2;
+  if (!o.method.empty()) {
+    sph::Method m;
+    sph::methodByName(o.method, m);  // checked by CLI11
+    o.server.sim.method = m;
+  }
+  o.server.sim.adaptive_overrides = o.gaze;
+  for (const std::string& setting : o.adaptive) {
+    const auto eq = setting.find('=');
+    try {
+      if (eq == std::string::npos) throw std::invalid_argument("expected NAME=VALUE");
+      std::size_t used = 0;
+      const std::string value = setting.substr(eq + 1);
+      o.server.sim.adaptive_overrides[setting.substr(0, eq)] = std::stod(value, &used);
+      if (used != value.size()) throw std::invalid_argument("not a number");
+    } catch (const std::exception& e) {
+      spdlog::error("--adaptive {}: {}", setting, e.what());
+      return 2;
+    }
   }
   net::inputSocketTypeByName(o.gaze_socket, o.server.net.gaze_type);
   net::inputSocketTypeByName(o.pose_socket, o.server.net.pose_type);
@@ -94,7 +124,8 @@ int main(int argc, char** argv) {
     spdlog::info("endpoint gaze {}", ep.gaze);
     spdlog::info("endpoint pose {}", ep.pose);
     spdlog::info("endpoint control {}", ep.control);
-    spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene, o.method, o.server.sim.settings.publish_hz,
+    spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene,
+                 o.method.empty() ? "(scene default)" : o.method, o.server.sim.settings.publish_hz,
                  o.server.sim.settings.free_run ? "free-run" : "real time");
     server.start();
     const timespec poll_interval{0, 100'000'000};

@@ -32,7 +32,7 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
                                           : net::PositionEncoding::Float32,
                options.velocities),
       settings_(options.settings),
-      session_(options.scene_dir, options.adaptive,
+      session_(options.scene_dir, options.adaptive_overrides,
                [this](sph::AdaptiveController& c) { feedGaze(c); }),
       control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }} {
   session_.load(options.scene, options.method, /*allow_paths=*/true);
@@ -78,7 +78,14 @@ void SimLoop::run() {
     const bool running = !settings_.paused && !finished_.load();
     if (running && (settings_.free_run || now >= nextStepTime())) {
       if (!settings_.free_run && now - nextStepTime() > kMaxLag) restartClock(now);
-      session_.step();
+      try {
+        session_.step();
+      } catch (const std::exception& e) {
+        // The library refuses a state it cannot step (a scene whose class masses the adaptive step
+        // cannot handle, for example): pause and say so instead of losing the thread.
+        spdlog::error("step {} failed, pausing: {}", session_.sim().stepCount(), e.what());
+        settings_.paused = true;
+      }
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
       now = Clock::now();

@@ -7,6 +7,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -24,8 +26,9 @@ namespace app {
 struct SimLoopOptions {
   std::string scene = "dambreak";
   std::string scene_dir;
-  sph::Method method = sph::Method::Gaze;
-  sph::AdaptiveConfig adaptive;
+  std::optional<sph::Method> method;  // none: the scene's default method
+  // Adaptive settings by name (adaptive_parameters.h) over each scene's own "adaptive" block.
+  std::map<std::string, double> adaptive_overrides;
   RunSettings settings;
   bool velocities = false;
   int threads = 2;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "app/adaptive_parameters.h"
 #include "scene/scene_loader.h"
 
 namespace app {
@@ -25,22 +26,27 @@ class FedAdaptiveStep : public sph::AdaptiveStep {
 
 }  // namespace
 
-SimSession::SimSession(std::string scene_dir, const sph::AdaptiveConfig& config,
+SimSession::SimSession(std::string scene_dir, std::map<std::string, double> overrides,
                        BeforeAdaptiveStep before)
-    : scene_dir_(std::move(scene_dir)), config_(config), before_(std::move(before)) {
-  config_.validate();
-}
+    : scene_dir_(std::move(scene_dir)), overrides_(std::move(overrides)), before_(std::move(before)) {}
 
-void SimSession::load(const std::string& scene_name, sph::Method method, bool allow_paths) {
+void SimSession::load(const std::string& scene_name, std::optional<sph::Method> method, bool allow_paths) {
   // Remote peers get names from the scene folder only: they must not make the server read any path.
   const std::vector<std::string> names = scene::listScenes(scene_dir_);
   if (!allow_paths && std::find(names.begin(), names.end(), scene_name) == names.end()) {
     throw scene::SceneError("no scene '" + scene_name + "' in " + scene_dir_);
   }
-  start(scene::loadScene(scene_name, scene_dir_), method);
+  const sph::Scene scene = scene::loadScene(scene_name, scene_dir_);
+  sph::Method chosen = sph::Method::Regular;
+  if (method) {
+    chosen = *method;
+  } else if (!sph::methodByName(scene.method, chosen)) {
+    throw scene::SceneError(scene.source + ": unknown method '" + scene.method + "'");
+  }
+  start(scene, chosen, withOverrides(scene.adaptive, overrides_));
 }
 
-void SimSession::reset() { start(scene_, method_); }
+void SimSession::reset() { start(scene_, method_, config_); }
 
 bool SimSession::setMethod(sph::Method method) {
   if (method == method_) return false;
@@ -49,7 +55,7 @@ bool SimSession::setMethod(sph::Method method) {
     method_ = method;
     return false;
   }
-  start(scene_, method);
+  start(scene_, method, config_);
   return true;
 }
 
@@ -64,7 +70,7 @@ void SimSession::setCamera(const sph::ScreenCamera& camera, bool from_client) {
   if (controller_ != nullptr) controller_->setCamera(camera_);
 }
 
-void SimSession::start(const sph::Scene& scene, sph::Method method) {
+void SimSession::start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config) {
   // Room for every LARGE particle to split (the thesis's 20,000 for 10,000 LARGE).
   const std::size_t capacity =
       std::max<std::size_t>(sph::ParticleSet::kDefaultCapacity,
@@ -73,12 +79,13 @@ void SimSession::start(const sph::Scene& scene, sph::Method method) {
   auto sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method), capacity);
   const sph::ScreenCamera camera = camera_from_client_ ? camera_ : sph::cameraFromSpec(scene.camera);
   sph::AdaptiveController* controller = nullptr;
-  if (auto owned = sph::makeAdaptiveController(method, config_, camera)) {
+  if (auto owned = sph::makeAdaptiveController(method, config, camera)) {
     controller = owned.get();
     sim->setAdaptiveStep(std::make_unique<FedAdaptiveStep>(std::move(owned), before_));
   }
   scene_ = scene;
   method_ = method;
+  config_ = config;
   camera_ = camera;
   sim_ = std::move(sim);
   controller_ = controller;

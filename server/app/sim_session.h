@@ -4,7 +4,9 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "sph/adaptive/adaptive_controller.h"
@@ -21,13 +23,16 @@ using BeforeAdaptiveStep = std::function<void(sph::AdaptiveController&)>;
 
 class SimSession {
  public:
-  SimSession(std::string scene_dir, const sph::AdaptiveConfig& config, BeforeAdaptiveStep before);
+  // `overrides`: adaptive settings by name (adaptive_parameters.h) that replace the scene's own
+  // "adaptive" values whenever a scene is loaded (the command line's --gaze-radius and friends).
+  SimSession(std::string scene_dir, std::map<std::string, double> overrides, BeforeAdaptiveStep before);
 
-  // Starts `scene` with `method`: a name in the scene folder, or with `allow_paths` (the command
+  // Starts `scene` with `method` (none: the scene's default method) and the scene's adaptive settings
+  // under the overrides. `scene` is a name in the scene folder, or with `allow_paths` (the command
   // line, never a remote peer) also a path to a scene file. Throws scene::SceneError or
   // std::exception when it cannot; the running simulation is then left as it was.
-  void load(const std::string& scene, sph::Method method, bool allow_paths = false);
-  // Restarts the current scene from its initial state, same method.
+  void load(const std::string& scene, std::optional<sph::Method> method, bool allow_paths = false);
+  // Restarts the current scene from its initial state, same method and settings.
   void reset();
   // Between adaptive methods the controller switches in place and the particles stay; to or from
   // regular the particle set changes class wholesale, so the scene restarts. True when it restarted.
@@ -52,9 +57,10 @@ class SimSession {
   const sph::AdaptiveController* controller() const { return controller_; }
 
  private:
-  void start(const sph::Scene& scene, sph::Method method);
+  void start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config);
 
   std::string scene_dir_;
+  std::map<std::string, double> overrides_;
   sph::AdaptiveConfig config_;
   BeforeAdaptiveStep before_;
   sph::Scene scene_;

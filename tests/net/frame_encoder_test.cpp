@@ -1,0 +1,92 @@
+// The frame encoder against the simulation's own arrays: both position encodings, size classes,
+// counts, geometry, and reuse of one Frame object across frames of different sizes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "net/frame_encoder.h"
+#include "scene/scene_loader.h"
+#include "sph/simulation.h"
+
+namespace {
+
+sph::Scene testScene() { return scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR); }
+
+gsph::v1::Frame roundTrip(net::FrameEncoder& encoder) {
+  zmq::message_t msg = encoder.serialize();
+  gsph::v1::Frame parsed;
+  EXPECT_TRUE(parsed.ParseFromArray(msg.data(), static_cast<int>(msg.size())));
+  return parsed;
+}
+
+TEST(FrameEncoder, Float32PositionsAreTheParticlePositionsExactly) {
+  sph::Simulation sim(testScene(), sph::SizeClass::Small);
+  sim.step();
+  net::FrameEncoder encoder;
+  net::FrameInfo info;
+  info.sequence = 7;
+  info.scene = "tiny_pool";
+  encoder.encode(sim, info);
+  const gsph::v1::Frame f = roundTrip(encoder);
+  const sph::ParticleSet& p = sim.particles();
+  ASSERT_EQ(f.particle_count(), p.size());
+  EXPECT_EQ(f.small_count(), p.size());
+  EXPECT_EQ(f.large_count(), 0u);
+  EXPECT_EQ(f.sequence(), 7u);
+  EXPECT_EQ(f.step(), 1);
+  EXPECT_EQ(f.protocol_version(), 1u);
+  EXPECT_EQ(f.encoding(), gsph::v1::POSITION_ENCODING_FLOAT32);
+  const std::vector<float> xyz = net::decodePositions(f);
+  ASSERT_EQ(xyz.size(), 3 * p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int a = 0; a < 3; ++a) ASSERT_EQ(xyz[3 * i + a], p.position[i][a]) << i;
+  }
+  ASSERT_EQ(f.size_classes().size(), p.size());
+  EXPECT_FLOAT_EQ(f.geometry().box().max().x(), 0.4f);
+}
+
+TEST(FrameEncoder, Quantized16IsWithinOneLevelOfTheBox) {
+  sph::Simulation sim(testScene(), sph::SizeClass::Large);
+  sim.step();
+  net::FrameEncoder encoder(net::PositionEncoding::Quantized16);
+  encoder.encode(sim, {});
+  const gsph::v1::Frame f = roundTrip(encoder);
+  EXPECT_EQ(f.encoding(), gsph::v1::POSITION_ENCODING_QUANTIZED16);
+  EXPECT_EQ(f.positions().size(), 6 * sim.particles().size());
+  const sph::BoxState box = sim.boxNow();
+  const std::vector<float> xyz = net::decodePositions(f);
+  for (std::size_t i = 0; i < sim.particles().size(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const float level = (box.max[a] - box.min[a]) / 65535.0f;
+      const float expected = std::clamp(sim.particles().position[i][a], box.min[a], box.max[a]);
+      ASSERT_NEAR(xyz[3 * i + a], expected, level) << i;
+    }
+  }
+  for (char c : f.size_classes()) EXPECT_EQ(c, 1);  // all LARGE
+}
+
+TEST(FrameEncoder, ReusedFrameFollowsAShrinkingParticleSet) {
+  sph::Simulation big(testScene(), sph::SizeClass::Small);
+  sph::Simulation small(testScene(), sph::SizeClass::Large);
+  net::FrameEncoder encoder;
+  encoder.setVelocities(true);
+  encoder.encode(big, {});
+  const gsph::v1::Frame& f = encoder.encode(small, {});
+  EXPECT_EQ(f.positions().size(), 12 * small.particles().size());
+  EXPECT_EQ(f.velocities().size(), 12 * small.particles().size());
+  EXPECT_EQ(f.size_classes().size(), small.particles().size());
+  EXPECT_EQ(f.particle_count(), small.particles().size());
+}
+
+TEST(FrameEncoder, MethodValuesMapBothWays) {
+  for (sph::Method m : {sph::Method::Regular, sph::Method::Surface, sph::Method::Gaze, sph::Method::Hybrid}) {
+    sph::Method back;
+    ASSERT_TRUE(net::fromProtoMethod(net::toProtoMethod(m), back));
+    EXPECT_EQ(back, m);
+  }
+  sph::Method out;
+  EXPECT_FALSE(net::fromProtoMethod(gsph::v1::METHOD_UNSPECIFIED, out));
+  EXPECT_FALSE(net::fromProtoMethod(99, out));
+}
+
+}  // namespace

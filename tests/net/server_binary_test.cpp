@@ -1,0 +1,162 @@
+// The built sph_server program: --help lists the endpoints, it serves on ephemeral ports, and SIGTERM
+// (or SIGINT) shuts it down cleanly with a final status line.
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <regex>
+
+#include "net_test_util.h"
+
+namespace {
+
+struct Child {
+  pid_t pid = -1;
+  int out_fd = -1;
+  std::string output;
+
+  explicit Child(std::vector<std::string> args) {
+    int fds[2];
+    if (::pipe(fds) != 0) return;
+    pid = ::fork();
+    if (pid == 0) {
+      ::dup2(fds[1], STDOUT_FILENO);
+      ::dup2(fds[1], STDERR_FILENO);
+      ::close(fds[0]);
+      std::vector<char*> argv;
+      for (auto& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    ::close(fds[1]);
+    out_fd = fds[0];
+  }
+  ~Child() {
+    if (pid > 0 && ::waitpid(pid, nullptr, WNOHANG) == 0) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, nullptr, 0);
+    }
+    if (out_fd >= 0) ::close(out_fd);
+  }
+  // Reads output until `pattern` matches or the deadline passes.
+  std::smatch waitFor(const std::regex& pattern) {
+    const auto end = std::chrono::steady_clock::now() + net_test::kTimeout;
+    std::smatch m;
+    while (!std::regex_search(output, m, pattern) && std::chrono::steady_clock::now() < end) {
+      if (!readSome(100)) break;
+    }
+    return m;
+  }
+  bool readSome(int timeout_ms) {
+    pollfd p{out_fd, POLLIN, 0};
+    if (::poll(&p, 1, timeout_ms) < 0) return false;
+    if (p.revents & (POLLIN | POLLHUP)) {
+      char buf[4096];
+      const ssize_t n = ::read(out_fd, buf, sizeof buf);
+      if (n <= 0) return false;
+      output.append(buf, static_cast<std::size_t>(n));
+    }
+    return true;
+  }
+  // Exit status, or -1 when it has not exited before the deadline.
+  int waitExit() {
+    const auto end = std::chrono::steady_clock::now() + net_test::kTimeout;
+    while (std::chrono::steady_clock::now() < end) {
+      int status = 0;
+      if (::waitpid(pid, &status, WNOHANG) == pid) {
+        pid = -1;
+        while (readSome(0)) {
+        }
+        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      }
+      readSome(50);
+    }
+    return -1;
+  }
+};
+
+std::vector<std::string> serverArgs() {
+  return {SPH_SERVER_BINARY, "--scene", "tiny_pool", "--scene-dir", SPH_NET_TEST_SCENE_DIR,
+          "--method", "gaze", "--threads", "1",
+          "--frames-endpoint", "tcp://127.0.0.1:*", "--gaze-endpoint", "tcp://127.0.0.1:*",
+          "--pose-endpoint", "tcp://127.0.0.1:*", "--control-endpoint", "tcp://127.0.0.1:*"};
+}
+
+TEST(ServerBinary, HelpListsEveryEndpoint) {
+  Child child({SPH_SERVER_BINARY, "--help"});
+  EXPECT_EQ(child.waitExit(), 0);
+  for (const char* option : {"--frames-endpoint", "--gaze-endpoint", "--pose-endpoint", "--control-endpoint",
+                             "tcp://127.0.0.1:5555", "tcp://127.0.0.1:5558", "--camera-source", "--free-run"}) {
+    EXPECT_NE(child.output.find(option), std::string::npos) << option;
+  }
+}
+
+TEST(ServerBinary, UnknownMethodIsAnError) {
+  auto args = serverArgs();
+  args[6] = "sideways";
+  Child child(args);
+  EXPECT_NE(child.waitExit(), 0);
+  EXPECT_NE(child.output.find("--method"), std::string::npos) << child.output;
+}
+
+TEST(ServerBinary, BadAdaptiveSettingIsAnError) {
+  auto args = serverArgs();
+  args.insert(args.end(), {"--gaze-radius", "0.5"});  // wider than the hysteresis ring
+  Child child(args);
+  EXPECT_EQ(child.waitExit(), 1);
+  EXPECT_NE(child.output.find("gaze_r"), std::string::npos) << child.output;
+  Child unknown([] {
+    auto a = serverArgs();
+    a.insert(a.end(), {"--adaptive", "no_such=1"});
+    return a;
+  }());
+  EXPECT_EQ(unknown.waitExit(), 1);
+  EXPECT_NE(unknown.output.find("unknown parameter 'no_such'"), std::string::npos) << unknown.output;
+}
+
+void expectCleanShutdown(int signal) {
+  Child child(serverArgs());
+  const std::smatch control = child.waitFor(std::regex("endpoint control (tcp://[0-9.:]+)"));
+  ASSERT_EQ(control.size(), 2u) << child.output;
+  const std::smatch frames = child.waitFor(std::regex("endpoint frames (tcp://[0-9.:]+)"));
+  ASSERT_EQ(frames.size(), 2u);
+  zmq::context_t ctx;
+  net_test::FrameSubscriber sub(ctx, frames[1].str());
+  ASSERT_TRUE(sub.next());
+  net_test::ControlClient client(ctx, control[1].str());
+  auto reply = client.send(net_test::statusRequest());
+  ASSERT_TRUE(reply);
+  EXPECT_EQ(reply->status().scene(), "tiny_pool");
+  ::kill(child.pid, signal);
+  EXPECT_EQ(child.waitExit(), 0) << child.output;
+  EXPECT_NE(child.output.find("shutting down"), std::string::npos) << child.output;
+  EXPECT_NE(child.output.find("final status: tiny_pool gaze"), std::string::npos) << child.output;
+}
+
+TEST(ServerBinary, SigtermShutsDownCleanly) { expectCleanShutdown(SIGTERM); }
+
+TEST(ServerBinary, SigintShutsDownCleanly) { expectCleanShutdown(SIGINT); }
+
+TEST(ServerBinary, MaxStepsEndsAScriptedRun) {
+  auto args = serverArgs();
+  args.insert(args.end(), {"--free-run", "--max-steps", "20"});
+  Child child(args);
+  EXPECT_EQ(child.waitExit(), 0) << child.output;
+  EXPECT_NE(child.output.find("ran 20 steps"), std::string::npos) << child.output;
+}
+
+TEST(ServerBinary, PortInUseIsAClearError) {
+  zmq::context_t ctx;
+  zmq::socket_t holder(ctx, zmq::socket_type::pub);
+  holder.bind("tcp://127.0.0.1:*");
+  auto args = serverArgs();
+  args[10] = holder.get(zmq::sockopt::last_endpoint);
+  Child child(args);
+  EXPECT_EQ(child.waitExit(), 1);
+  EXPECT_NE(child.output.find("cannot bind frames socket"), std::string::npos) << child.output;
+}
+
+}  // namespace
