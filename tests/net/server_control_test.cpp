@@ -54,6 +54,12 @@ TEST(ServerControl, StatusDescribesTheServer) {
   EXPECT_DOUBLE_EQ(r.status().parameters().at("gaze_radius"), 0.12);
   EXPECT_DOUBLE_EQ(r.status().parameters().at("publish_hz"), 60.0);
   EXPECT_LT(r.status().gaze_age_ms(), 0.0f) << "no gaze has arrived";
+  // The one frame subscriber of this run is counted (XPUB subscriptions).
+  const auto end = std::chrono::steady_clock::now() + net_test::kTimeout;
+  while (run.status().status().subscribers() != 1 && std::chrono::steady_clock::now() < end) {
+    run.sub.next(std::chrono::milliseconds(50));
+  }
+  EXPECT_EQ(run.status().status().subscribers(), 1u);
 }
 
 TEST(ServerControl, PauseStopsTheStepAndResumeRestartsIt) {

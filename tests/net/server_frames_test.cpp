@@ -170,6 +170,28 @@ TEST(ServerFrames, CameraPoseFromAClientChangesTheProjection) {
   EXPECT_LT(net_test::maxAbsDiff(echoed.view, client_camera.view), 1e-5);
 }
 
+TEST(ServerFrames, GazeOverPushPullIsTakenToo) {
+  auto options = net_test::testOptions(sph::Method::Gaze);
+  options.net.gaze_type = net::InputSocketType::Pull;
+  auto server = net_test::startServer(options);
+  zmq::context_t ctx;
+  FrameSubscriber sub(ctx, server->endpoints().frames);
+  zmq::socket_t push(ctx, zmq::socket_type::push);
+  push.set(zmq::sockopt::linger, 0);
+  push.connect(server->endpoints().gaze);
+  std::uint64_t sequence = 0;
+  // Two-part messages (a topic, then the payload) are accepted as well.
+  auto frame = sub.waitFor(
+      [](const gsph::v1::Frame& f) { return f.gaze().source_id() == "test" && f.gaze().sample_sequence() > 0; },
+      [&] {
+        (void)push.send(zmq::str_buffer("gaze"), zmq::send_flags::sndmore | zmq::send_flags::dontwait);
+        (void)push.send(zmq::buffer(net_test::gazeSample(0.4, 0.6, ++sequence).SerializeAsString()),
+                        zmq::send_flags::dontwait);
+      });
+  ASSERT_TRUE(frame);
+  EXPECT_NEAR(frame->gaze().x(), 0.4, 1e-6);
+}
+
 TEST(ServerFrames, CameraSourceIgnoresOtherViewers) {
   auto options = net_test::testOptions(sph::Method::Gaze);
   options.sim.camera_source = "main";
