@@ -88,7 +88,7 @@ void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, cons
                 frame->encoding == gsph::v1::POSITION_ENCODING_QUANTIZED16 ? "quantized16" : "float32",
                 frame->wire_bytes / 1024);
   }
-  if (mouse_gaze) ImGui::Text("mouse gaze on: %llu samples sent", static_cast<unsigned long long>(stats.gaze_sent));
+  if (mouse_gaze) ImGui::Text("gaze from this viewer: %llu samples sent", static_cast<unsigned long long>(stats.gaze_sent));
   if (!stats.last_error.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "last error: %s", stats.last_error.c_str());
   ImGui::Separator();
   drawControls(frame, client_.latestStatus());

@@ -190,6 +190,10 @@ int runViewer(const ViewerOptions& options) {
 
       overlay_lines.clear();
       if (frame) appendGazeOverlay(overlay_lines, frame->gaze, aspect);
+      if (options.gaze_at && now - last_gaze_time >= kMouseGazePeriod) {
+        client.setGaze((*options.gaze_at)[0], (*options.gaze_at)[1], true);
+        last_gaze_time = now;
+      }
       if (options.mouse_gaze && now - last_gaze_time >= kMouseGazePeriod) {
         double cx = 0.0, cy = 0.0;
         glfwGetCursorPos(window, &cx, &cy);
@@ -215,7 +219,7 @@ int runViewer(const ViewerOptions& options) {
       ImGui::NewFrame();
       const NetworkStats stats = client.stats();
       if (frame) rates.frame_age_ms = static_cast<float>(systemMicros() - frame->send_time_us) / 1000.0f;
-      if (show_panel) panel.draw(frame.get(), stats, rates, options.mouse_gaze);
+      if (show_panel) panel.draw(frame.get(), stats, rates, options.mouse_gaze || options.gaze_at);
       if (!stats.last_frame_arrival) {
         drawCentredText(("waiting for server at " + options.endpoints.frames).c_str());
       } else if (now - *stats.last_frame_arrival > kServerSilence) {

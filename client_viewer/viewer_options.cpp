@@ -27,6 +27,11 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   app.add_option("--height", o.height, "Window height in screen coordinates")
       ->check(CLI::Range(64, 8192))->capture_default_str();
   app.add_flag("--mouse-gaze", o.mouse_gaze, "Send the cursor as gaze (source_id \"mouse\")");
+  std::array<float, 2> gaze_at{};
+  auto* gaze_at_opt = app.add_option("--gaze-at", gaze_at,
+                                     "Send a fixed gaze point x y (0..1, origin top left) instead of the mouse")
+                          ->check(CLI::Range(0.0f, 1.0f))
+                          ->excludes("--mouse-gaze");
   app.add_flag("!--no-panel", o.panel, "Hide the statistics and control panel");
   app.add_flag("!--no-vsync", o.vsync, "Render as fast as possible instead of at the display rate");
   std::map<std::string, ColourMode> colours{{"class", ColourMode::kSizeClass}, {"speed", ColourMode::kSpeed}};
@@ -52,6 +57,7 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  if (gaze_at_opt->count() > 0) o.gaze_at = gaze_at;
   if (eye_opt->count() > 0) o.eye = eye;
   if (target_opt->count() > 0) o.target = target;
   if (o.eye.has_value() != o.target.has_value()) {

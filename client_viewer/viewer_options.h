@@ -16,6 +16,7 @@ struct ViewerOptions {
   int width = 1280;
   int height = 720;
   bool mouse_gaze = false;
+  std::optional<std::array<float, 2>> gaze_at;  // a fixed gaze point (demos, screenshots)
   bool panel = true;
   bool vsync = true;
   ColourMode colour = ColourMode::kSizeClass;

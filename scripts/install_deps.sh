@@ -8,7 +8,7 @@ packages=(
   libspdlog-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libmsgpack-cxx-dev
-  libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth
+  libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth libxtst-dev
   gnuplot-nox python3-zmq python3-protobuf
 )
 missing=()

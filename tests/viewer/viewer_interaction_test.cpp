@@ -187,3 +187,14 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   const Colour c = pixel(image, static_cast<int>(centre[0]), static_cast<int>(centre[1]));
   EXPECT_TRUE(isBlue(c)) << c.r << " " << c.g << " " << c.b;
 }
+
+TEST(ViewerGaze, FixedGazePointIsSent) {
+  const std::string dir = scratchDir();
+  TestServer server(makeFrame(oneParticle(0), 1));
+  auto viewer = startViewer(viewerArgs(server, "gaze-at", {"--gaze-at", "0.2", "0.7"}), dir + "/viewer.log");
+  EXPECT_TRUE(server.waitForGaze(
+      [](const auto& g) { return g.valid() && std::abs(g.x() - 0.2) < 1e-6 && std::abs(g.y() - 0.7) < 1e-6; }, kWait))
+      << readFile(dir + "/viewer.log");
+  viewer->terminate();
+  EXPECT_TRUE(viewer->waitExit(kWait).has_value());
+}
