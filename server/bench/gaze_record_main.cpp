@@ -1,16 +1,22 @@
 // sph_gaze_record: writes the synthetic gaze recording a scene ships with (scenes/<name>.gaze.csv),
-// so that headless runs of the gaze and hybrid methods are reproducible. Fixation targets are drawn
-// where the water is or will be on screen: the scene's box footprint up to the water's top, seen by
-// the scene's camera. The seed comes from the scene name, so a recording is remade bit for bit.
+// so that headless runs of the gaze and hybrid methods are reproducible. Fixation targets are points
+// on the water at the time of the fixation: the tool first runs the scene (LARGE particles, no
+// adaptive step) and keeps the projected positions of a sample of particles every 0.1 s; a target
+// is one of them, as a viewer's eye jumps between places on the water. The seed comes from the
+// scene name and the simulation is deterministic, so a recording is remade bit for bit.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 #include <filesystem>
 
 #include "gaze/fixation_model.h"
 #include "gaze/gaze_recording.h"
 #include "scene/scene_loader.h"
 #include "sph/camera.h"
+#include "sph/simulation.h"
 
 namespace {
 
@@ -25,7 +31,7 @@ std::uint64_t seedOf(const std::string& name) {
 }
 
 // Screen rectangle (normalized, origin top left) covering the region the water occupies over the
-// run, shrunk a little so fixations fall on water rather than on its edges.
+// run, shrunk a little: the model's fallback when a snapshot has no visible water.
 void waterOnScreen(const sph::Scene& scene, gaze::FixationModelParams& params) {
   const sph::Aabb box = scene.boundary.enclosingBox();
   sph::Aabb wet = box;
@@ -55,6 +61,51 @@ void waterOnScreen(const sph::Scene& scene, gaze::FixationModelParams& params) {
   }
 }
 
+// Projected positions (normalized screen, in front of the eye) of up to `per_snapshot` particles,
+// every `interval_s` of simulated time over the scene's run.
+class WaterOnScreen {
+ public:
+  WaterOnScreen(const sph::Scene& scene, double interval_s, std::size_t per_snapshot)
+      : interval_s_(interval_s) {
+    sph::Simulation sim(scene, sph::SizeClass::Large);
+    const sph::Projector projector(sph::cameraFromSpec(scene.camera));
+    const int steps_per_snapshot =
+        std::max(1, static_cast<int>(std::lround(interval_s / scene.params.time_step)));
+    for (int step = 0; step <= scene.frames; ++step) {
+      if (step % steps_per_snapshot == 0) {
+        std::vector<std::pair<double, double>> points;
+        const std::size_t n = sim.particles().size();
+        const std::size_t stride = std::max<std::size_t>(1, n / per_snapshot);
+        for (std::size_t i = 0; i < n; i += stride) {
+          const sph::ScreenDisc d =
+              projector.project(sim.particles().position[i].cast<double>(), 0.0);
+          if (d.in_front && d.x >= 0.0 && d.x <= 1.0 && d.y >= 0.0 && d.y <= 1.0) {
+            points.emplace_back(d.x, d.y);
+          }
+        }
+        snapshots_.push_back(std::move(points));
+      }
+      if (step < scene.frames) sim.step();
+    }
+  }
+
+  bool pick(double time_s, double u, double& x, double& y) const {
+    if (snapshots_.empty()) return false;
+    const auto k = std::min<std::size_t>(snapshots_.size() - 1,
+                                         static_cast<std::size_t>(std::max(0.0, time_s) / interval_s_));
+    const auto& points = snapshots_[k];
+    if (points.empty()) return false;
+    const auto& p = points[std::min(points.size() - 1, static_cast<std::size_t>(u * points.size()))];
+    x = p.first;
+    y = p.second;
+    return true;
+  }
+
+ private:
+  double interval_s_;
+  std::vector<std::vector<std::pair<double, double>>> snapshots_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,6 +133,10 @@ int main(int argc, char** argv) {
       params.rate_hz = rate_hz;
       params.blink_probability = blink_probability;
       waterOnScreen(sc, params);
+      const WaterOnScreen water(sc, 0.1, 2000);
+      params.pick_target = [&water](double t, double u, double& x, double& y) {
+        return water.pick(t, u, x, y);
+      };
       // The whole run plus a second, so the recording covers it without looping.
       const double seconds = sc.frames * sc.params.time_step + 1.0;
       const gaze::GazeRecording rec = gaze::synthesizeRecording(params, seconds);

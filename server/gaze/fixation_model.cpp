@@ -62,6 +62,15 @@ FixationSaccadeModel::FixationSaccadeModel(const FixationModelParams& params)
 }
 
 void FixationSaccadeModel::drawTarget(double& x, double& y) {
+  if (params_.pick_target) {
+    const double u = random_.uniform01();
+    const double time_s = static_cast<double>(sample_index_) / params_.rate_hz;
+    if (params_.pick_target(time_s, u, x, y)) {
+      x = std::clamp(x, 0.0, 1.0);
+      y = std::clamp(y, 0.0, 1.0);
+      return;
+    }
+  }
   x = random_.uniform(params_.region_x0, params_.region_x1);
   y = random_.uniform(params_.region_y0, params_.region_y1);
 }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <random>
 
 #include "gaze/gaze_recording.h"
@@ -29,6 +30,10 @@ struct FixationModelParams {
   double region_x0 = 0.25, region_y0 = 0.25, region_x1 = 0.75, region_y1 = 0.75;
   double blink_probability = 0.0;  // chance per fixation of a short invalid gap
   double blink_s = 0.1;            // length of that gap (at most half the fixation)
+  // Optional: where fixation targets are at a given time (e.g. on moving water). Called with the
+  // time of the fixation and a uniform number u in [0, 1) from the model's own stream; returns
+  // false to fall back to the rectangle. The result is clamped into [0, 1].
+  std::function<bool(double time_s, double u, double& x, double& y)> pick_target;
 };
 
 // Throws std::invalid_argument naming the first bad field (non-finite, rate <= 0, min > max, region

@@ -112,3 +112,39 @@ TEST(SceneLoader, WaterRegionTooSmallForTheParticlesFailsToFill) {
   sph::ParticleSet p;
   EXPECT_THROW(sph::fillWater(s, sph::SizeClass::Small, p), std::invalid_argument);
 }
+
+TEST(SceneLoader, MethodAdaptiveSettingsAndGazeRecordingAreRead) {
+  const sph::Scene s = scene::parseScene(
+      withKey(R"("method": "hybrid", "gaze_recording": "x.gaze.csv",
+                 "adaptive": {"gaze_radius": 0.07, "gaze_ring_radius": 0.1, "alpha": 0.5,
+                              "surface_includes_walls": false})"),
+      "test.json");
+  EXPECT_EQ(s.method, "hybrid");
+  EXPECT_EQ(s.gaze_recording, "x.gaze.csv");
+  EXPECT_DOUBLE_EQ(s.adaptive.gaze_radius, 0.07);
+  EXPECT_DOUBLE_EQ(s.adaptive.gaze_ring_radius, 0.1);
+  EXPECT_DOUBLE_EQ(s.adaptive.alpha, 0.5);
+  EXPECT_FALSE(s.adaptive.surface_includes_walls);
+  EXPECT_DOUBLE_EQ(s.adaptive.threshold, 0.225);  // untouched: the thesis value
+}
+
+TEST(SceneLoader, BadMethodAndAdaptiveSettingsAreNamed) {
+  std::string e = errorOf(withKey(R"("method": "eye")"));
+  EXPECT_NE(e.find("'method'"), std::string::npos) << e;
+  e = errorOf(withKey(R"("adaptive": {"gaze_radius": -1})"));
+  EXPECT_NE(e.find("gaze_radius"), std::string::npos) << e;
+  e = errorOf(withKey(R"("adaptive": {"gaze_radius": 0.1, "gaze_ring_radius": 0.05})"));
+  EXPECT_NE(e.find("gaze_ring_radius"), std::string::npos) << e;
+  e = errorOf(withKey(R"("adaptive": {"radius": 0.1})"));
+  EXPECT_NE(e.find("'adaptive.radius'"), std::string::npos) << e;
+  e = errorOf(withKey(R"("adaptive": {"surface_includes_walls": 1})"));
+  EXPECT_NE(e.find("surface_includes_walls"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, ShippedScenesNameAGazeRecordingThatExists) {
+  for (const auto& name : scene::listScenes(scene::defaultSceneDir())) {
+    const sph::Scene s = scene::loadScene(name);
+    ASSERT_FALSE(s.gaze_recording.empty()) << name;
+    EXPECT_TRUE(std::filesystem::exists(s.gaze_recording)) << s.gaze_recording;
+  }
+}

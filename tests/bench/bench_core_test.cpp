@@ -1,0 +1,79 @@
+// sph_bench's pieces: replaying a gaze recording into the adaptive step, the method list, and the
+// comparison table.
+#include <gtest/gtest.h>
+
+#include "bench/bench_compare.h"
+#include "bench/bench_run.h"
+#include "bench/gaze_replay.h"
+
+namespace {
+
+gaze::GazeRecording threeSamples() {
+  gaze::GazeRecording rec;
+  rec.samples = {{0.0, 0.1, 0.2, true}, {0.5, 0.3, 0.4, true}, {1.0, 0.0, 0.0, false}};
+  return rec;
+}
+
+TEST(GazeReplay, NewestValidSampleWithItsAge) {
+  const gaze::GazeRecording rec = threeSamples();
+  sph::GazeInput g = bench::gazeInputAt(rec, 0.25);
+  ASSERT_TRUE(g.present);
+  EXPECT_DOUBLE_EQ(g.x, 0.1);
+  EXPECT_DOUBLE_EQ(g.y, 0.2);
+  EXPECT_DOUBLE_EQ(g.age_s, 0.25);
+  // After the invalid sample at 1.0 the last valid one (0.5) is held, ageing.
+  g = bench::gazeInputAt(rec, 1.2);
+  ASSERT_TRUE(g.present);
+  EXPECT_DOUBLE_EQ(g.x, 0.3);
+  EXPECT_NEAR(g.age_s, 0.7, 1e-12);
+}
+
+TEST(GazeReplay, LoopsPastTheEndAndIsEmptyWithoutSamples) {
+  const gaze::GazeRecording rec = threeSamples();
+  // Period = duration * n / (n - 1) = 1.5 s: t = 1.6 replays t = 0.1.
+  const sph::GazeInput g = bench::gazeInputAt(rec, 1.6);
+  ASSERT_TRUE(g.present);
+  EXPECT_DOUBLE_EQ(g.x, 0.1);
+  EXPECT_FALSE(bench::gazeInputAt(gaze::GazeRecording{}, 0.3).present);
+}
+
+TEST(BenchRun, EveryMethodIsKnownAndOthersAreRejected) {
+  for (const char* m : {"regular", "surface", "gaze", "hybrid"}) {
+    EXPECT_NO_THROW(bench::requireKnownMethod(m)) << m;
+  }
+  EXPECT_THROW(bench::requireKnownMethod("eye"), std::invalid_argument);
+}
+
+TEST(BenchRun, GazeMethodWithoutARecordingIsAClearError) {
+  sph::Scene s;
+  s.name = "tiny";
+  s.boundary.box.max = Eigen::Vector3d(0.5, 0.5, 0.5);
+  s.water.max = Eigen::Vector3d(0.5, 0.5, 0.5);
+  s.large_particles = 200;
+  bench::RunOptions options;
+  options.frames = 2;
+  try {
+    bench::runScene(s, "gaze", options);
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("gaze recording"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
+  bench::RunSummary regular, gaze_run;
+  regular.run.scene = gaze_run.run.scene = "dambreak";
+  regular.run.method = "regular";
+  gaze_run.run.method = "gaze";
+  regular.summary.total.mean = 10.0;
+  gaze_run.summary.total.mean = 4.0;
+  gaze_run.summary.adaptive.mean = 0.2;
+  const std::string md = bench::comparisonMarkdown({regular, gaze_run});
+  EXPECT_NE(md.find("## dambreak"), std::string::npos) << md;
+  EXPECT_NE(md.find("| phase | regular | gaze |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| **Total (ms)** | **10.000** | **4.000** |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Total / regular | 1.00 | 0.40 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Adaptive share of step | 0.0 % | 5.0 % |"), std::string::npos) << md;
+}
+
+}  // namespace
