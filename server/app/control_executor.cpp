@@ -134,7 +134,13 @@ ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& tar
           break;
         }
         // To or from regular the scene restarts (the particle classes change wholesale).
-        if (session.setMethod(method)) effects.restart_clock = true;
+        const sph::Method before = session.method();
+        if (session.setMethod(method)) {
+          effects.restart_clock = true;
+          spdlog::info("method {} -> {}: the scene restarted", sph::methodName(before), sph::methodName(method));
+        } else {
+          spdlog::info("method {} -> {}", sph::methodName(before), sph::methodName(method));
+        }
         break;
       }
       case gsph::v1::Control::kSetParameters: {
