@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <omp.h>
+#include <pthread.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -64,6 +65,7 @@ SimLoop::Clock::time_point SimLoop::nextStepTime() const {
 }
 
 void SimLoop::run() {
+  pthread_setname_np(pthread_self(), "sph-sim");
   // OpenMP's thread count is per calling thread: set it on the thread that steps.
   omp_set_num_threads(std::max(1, options_.threads));
   Clock::time_point now = Clock::now();
