@@ -12,8 +12,10 @@ namespace viewer_test {
 
 class ChildProcess {
  public:
-  // Starts `argv[0]` with its stdout and stderr appended to `log_path`. Throws on failure.
-  ChildProcess(const std::vector<std::string>& argv, const std::string& log_path);
+  // Starts `argv[0]` with its stdout and stderr appended to `log_path`, with this process's
+  // environment plus `extra_env` ("NAME=value"). Throws on failure.
+  ChildProcess(const std::vector<std::string>& argv, const std::string& log_path,
+               const std::vector<std::string>& extra_env = {});
   ~ChildProcess();  // kills a child still running
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;
