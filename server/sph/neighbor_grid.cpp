@@ -1,6 +1,9 @@
 #include "sph/neighbor_grid.h"
 
 #include <algorithm>
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,9 +31,9 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   cell_start_.assign(cells + 1, 0);
   cell_particles_.reserve(particle_capacity);
   particle_cell_.reserve(particle_capacity);
-  sorted_points_.reserve(particle_capacity);
+  for (auto* v : {&sorted_x_, &sorted_y_, &sorted_z_, &sorted_support_}) v->reserve(particle_capacity);
   neighbor_count_.reserve(particle_capacity);
-  neighbor_index_.resize(particle_capacity * stride_);
+  neighbor_index_.resize(particle_capacity * stride_ + 16);
 }
 
 std::uint32_t NeighborGrid::cellOf(const Vec3& p) const {
@@ -63,12 +66,15 @@ void NeighborGrid::bin(const ParticleSet& particles) {
     for (std::size_t c = cells; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
     cell_start_[0] = 0;
   }
-  sorted_points_.resize(n);
+  for (auto* v : {&sorted_x_, &sorted_y_, &sorted_z_, &sorted_support_}) v->resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t j = cell_particles_[k];
     const Vec3& x = particles.position[j];
-    sorted_points_[k] = Eigen::Vector4f(x.x(), x.y(), x.z(), particles.support[j]);
+    sorted_x_[k] = x.x();
+    sorted_y_[k] = x.y();
+    sorted_z_[k] = x.z();
+    sorted_support_[k] = particles.support[j];
   }
 }
 
@@ -103,32 +109,78 @@ std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::s
   const int x1 = std::min(cx + R, dims_[0] - 1);
 
   std::uint32_t* out = neighbor_index_.data() + i * stride_;
-  const std::uint32_t last_slot = static_cast<std::uint32_t>(stride_ - 1);
+  const auto self = static_cast<std::uint32_t>(i);
   std::uint32_t count = 0;
   for (int z = std::max(cz - R, 0); z <= std::min(cz + R, dims_[2] - 1); ++z) {
     for (int y = std::max(cy - R, 0); y <= std::min(cy + R, dims_[1] - 1); ++y) {
       // Cells x0..x1 of one row are contiguous in the sorted list.
       const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
-      const std::uint32_t begin = cell_start_[row + x0];
-      const std::uint32_t end = cell_start_[row + x1 + 1];
-      for (std::uint32_t k = begin; k < end; ++k) {
-        const Eigen::Vector4f& q = sorted_points_[k];
-        const float dx = q.x() - pi.x();
-        const float dy = q.y() - pi.y();
-        const float dz = q.z() - pi.z();
-        const float reach = 0.5f * (hi + q.w());  // eq. (3.34)
-        const std::uint32_t j = cell_particles_[k];
-        // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so
-        // a branch here mispredicts often. Write always, advance the cursor only on acceptance.
-        const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != i);
-        out[std::min<std::uint32_t>(count, last_slot)] = j;
-        count += accept;
-      }
+      count = gatherRow(cell_start_[row + x0], cell_start_[row + x1 + 1], pi, hi, self, out, count);
     }
   }
   neighbor_count_[i] = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(stride_));
   return count;
 }
+
+#if defined(__AVX512F__) && !defined(SPH_SCALAR_NEIGHBORS)
+std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi,
+                                      float hi, std::uint32_t self, std::uint32_t* out,
+                                      std::uint32_t count) const {
+  // 16 candidates at a time; compress-store keeps the accepted ones in candidate order, so the
+  // lists are the same as the scalar loop's (and the same for any thread count).
+  const __m512 px = _mm512_set1_ps(pi.x());
+  const __m512 py = _mm512_set1_ps(pi.y());
+  const __m512 pz = _mm512_set1_ps(pi.z());
+  const __m512 half_hi = _mm512_set1_ps(0.5f * hi);
+  const __m512 half = _mm512_set1_ps(0.5f);
+  const __m512i self_v = _mm512_set1_epi32(static_cast<int>(self));
+  const auto capacity = static_cast<std::uint32_t>(stride_ - 1);
+  for (std::uint32_t k = begin; k < end; k += 16) {
+    const std::uint32_t left = end - k;
+    const __mmask16 live = left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
+    const __m512 dx = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_x_.data() + k), px);
+    const __m512 dy = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_y_.data() + k), py);
+    const __m512 dz = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_z_.data() + k), pz);
+    // reach = (hi + hj) / 2, eq. (3.34)
+    const __m512 reach =
+        _mm512_fmadd_ps(_mm512_maskz_loadu_ps(live, sorted_support_.data() + k), half, half_hi);
+    const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
+    const __m512i j = _mm512_maskz_loadu_epi32(live, cell_particles_.data() + k);
+    const __mmask16 accept = _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) &
+                             _mm512_cmpneq_epi32_mask(j, self_v);
+    const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accept));
+    // Compress in a register and store all 16 lanes while the list has room for them (a
+    // compress-store straight to memory is several times slower on current cores); near the end
+    // of the list store only the accepted lanes, so no write reaches the next particle's list.
+    if (count + 16 <= stride_) {
+      _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
+    } else if (count + accepted <= capacity) {
+      _mm512_mask_compressstoreu_epi32(out + count, accept, j);
+    }
+    count += accepted;
+  }
+  return count;
+}
+#else
+std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi,
+                                      float hi, std::uint32_t self, std::uint32_t* out,
+                                      std::uint32_t count) const {
+  const auto last_slot = static_cast<std::uint32_t>(stride_ - 1);
+  for (std::uint32_t k = begin; k < end; ++k) {
+    const float dx = sorted_x_[k] - pi.x();
+    const float dy = sorted_y_[k] - pi.y();
+    const float dz = sorted_z_[k] - pi.z();
+    const float reach = 0.5f * (hi + sorted_support_[k]);  // eq. (3.34)
+    const std::uint32_t j = cell_particles_[k];
+    // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so a
+    // branch here mispredicts often. Write always, advance the cursor only on acceptance.
+    const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != self);
+    out[std::min<std::uint32_t>(count, last_slot)] = j;
+    count += accept;
+  }
+  return count;
+}
+#endif
 
 double NeighborGrid::meanNeighbors() const {
   if (neighbor_count_.empty()) return 0.0;
