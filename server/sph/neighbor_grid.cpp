@@ -155,7 +155,9 @@ std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, co
     if (count + 16 <= stride_) {
       _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
     } else if (count + accepted <= capacity) {
-      _mm512_mask_compressstoreu_epi32(out + count, accept, j);
+      alignas(64) std::uint32_t lanes[16];
+      _mm512_store_si512(lanes, _mm512_maskz_compress_epi32(accept, j));
+      for (std::uint32_t a = 0; a < accepted; ++a) out[count + a] = lanes[a];
     }
     count += accepted;
   }
