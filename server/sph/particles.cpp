@@ -83,6 +83,19 @@ std::size_t ParticleSet::compact(std::span<const std::uint8_t> keep) {
   return n;
 }
 
+void ParticleSet::swapRemove(std::span<const std::uint32_t> ascending) {
+  std::size_t size_now = size();
+  for (auto it = ascending.rbegin(); it != ascending.rend(); ++it) {
+    const std::size_t hole = *it;
+    if (hole >= size_now) throw std::out_of_range("swapRemove: index past the end");
+    const std::size_t last = --size_now;
+    forEachAttribute([&](auto& v) {
+      if (hole != last) v[hole] = v[last];
+      v.pop_back();
+    });
+  }
+}
+
 double ParticleSet::totalMass() const {
   double m = 0.0;
   for (float mi : mass) m += mi;

@@ -108,3 +108,27 @@ TEST(ParticleSet, TotalMassAndClassCounts) {
 }
 
 }  // namespace
+
+TEST(ParticleSet, SwapRemoveMovesTheLastParticlesIntoTheHoles) {
+  sph::ParticleSet p = makeSet(8, 16);
+  const std::vector<std::uint32_t> removed = {1, 4, 7};
+  p.swapRemove(removed);
+  ASSERT_EQ(p.size(), 5u);
+  // From the highest index down: 7 is the last (just dropped), 6 fills 4, 5 fills 1.
+  const std::uint32_t expected[] = {0, 5, 2, 3, 6};
+  for (std::size_t k = 0; k < p.size(); ++k) expectParticleIs(p, k, expected[k]);
+  EXPECT_THROW(p.swapRemove(std::vector<std::uint32_t>{9}), std::out_of_range);
+}
+
+TEST(ParticleSet, AppendZeroedGivesFreshIdsAndZeroState) {
+  sph::ParticleSet p = makeSet(3, 8);
+  const std::size_t first = p.appendZeroed(2);
+  ASSERT_EQ(first, 3u);
+  ASSERT_EQ(p.size(), 5u);
+  EXPECT_EQ(p.id[3], 3u);
+  EXPECT_EQ(p.id[4], 4u);
+  EXPECT_EQ(p.position[4], Vec3::Zero());
+  EXPECT_EQ(p.velocity[3], Vec3::Zero());
+  EXPECT_EQ(p.mass[4], 0.0f);
+  EXPECT_THROW(p.appendZeroed(4), std::length_error);
+}

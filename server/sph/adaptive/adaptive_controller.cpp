@@ -1,5 +1,6 @@
 #include "sph/adaptive/adaptive_controller.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "sph/adaptive/decide.h"
@@ -75,21 +76,24 @@ void AdaptiveController::apply(Simulation& sim) {
     decideBySurface(sim, config_, decision_);
   }
   if (use_gaze) {
-    if (method_ == Method::Hybrid) {
-      gaze_decision_.resize(n);
-      decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, gaze_decision_);
-      combineHybrid(gaze_decision_, decision_);
-    } else {
-      decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, decision_);
-    }
+    decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, method_ == Method::Hybrid, decision_);
   }
 
   stats_ = AdaptiveStats{};
+  int split_wanted = 0;
+  int merge_wanted = 0;
+#pragma omp parallel for schedule(static) reduction(+ : split_wanted, merge_wanted)
   for (std::size_t i = 0; i < n; ++i) {
-    stats_.split_wanted += decision_[i] == kSplit && p.size_class[i] == SizeClass::Large;
-    stats_.merge_wanted += decision_[i] == kMerge && p.size_class[i] == SizeClass::Small;
+    split_wanted += decision_[i] == kSplit && p.size_class[i] == SizeClass::Large;
+    merge_wanted += decision_[i] == kMerge && p.size_class[i] == SizeClass::Small;
   }
-  choosePartners(p, sim.grid(), decision_, partner_);
+  stats_.split_wanted = split_wanted;
+  stats_.merge_wanted = merge_wanted;
+  if (merge_wanted > 0) {
+    choosePartners(p, sim.grid(), decision_, partner_);
+  } else {
+    std::fill(partner_.begin(), partner_.end(), -1);
+  }
   const SplitMergeCounts counts = applySplitMerge(sim, decision_, partner_, keep_, split_slot_);
   stats_.splits = counts.splits;
   stats_.merges = counts.merges;

@@ -54,7 +54,6 @@ class AdaptiveController : public AdaptiveStep {
   GazeMode gazeMode() const;
 
   std::vector<std::int8_t> decision_;
-  std::vector<std::int8_t> gaze_decision_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint8_t> keep_;
   std::vector<std::uint32_t> split_slot_;

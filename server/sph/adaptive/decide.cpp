@@ -89,7 +89,8 @@ void decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<st
 }
 
 void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
-                  double gaze_y, const AdaptiveConfig& config, std::span<std::int8_t> out) {
+                  double gaze_y, const AdaptiveConfig& config, bool hybrid,
+                  std::span<std::int8_t> out) {
   const Projector projector(camera);
   const double inv_aspect = 1.0 / projector.aspect();
   const std::size_t n = particles.size();
@@ -97,30 +98,25 @@ void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, doub
   for (std::size_t i = 0; i < n; ++i) {
     const ScreenDisc disc =
         projector.project(particles.position[i].cast<double>(), particles.radius[i]);
-    if (!disc.in_front) {
-      out[i] = kMerge;
-      continue;
+    std::int8_t gaze = kMerge;
+    if (disc.in_front) {
+      // Distances in units of the viewport width (y is a fraction of the height).
+      const double dx = disc.x - gaze_x;
+      const double dy = (disc.y - gaze_y) * inv_aspect;
+      const double dist2 = dx * dx + dy * dy;
+      const double inner = config.gaze_radius + disc.radius;
+      const double outer = config.gaze_ring_radius + disc.radius;
+      // eq. (3.47): f = sgn(|r_i - r_gaze|^2 - (r_i + r_gaze)^2); SPLIT where f < 0 (3.48).
+      gaze = dist2 < inner * inner ? kSplit : (dist2 > outer * outer ? kMerge : kRemain);
     }
-    // Distances in units of the viewport width (y is a fraction of the height).
-    const double dx = disc.x - gaze_x;
-    const double dy = (disc.y - gaze_y) * inv_aspect;
-    const double dist2 = dx * dx + dy * dy;
-    const double inner = config.gaze_radius + disc.radius;
-    const double outer = config.gaze_ring_radius + disc.radius;
-    // eq. (3.47): f = sgn(|r_i - r_gaze|^2 - (r_i + r_gaze)^2); SPLIT where f < 0 (3.48).
-    out[i] = dist2 < inner * inner ? kSplit : (dist2 > outer * outer ? kMerge : kRemain);
-  }
-}
-
-void combineHybrid(std::span<const std::int8_t> gaze, std::span<std::int8_t> surface_in_out) {
-  const std::size_t n = surface_in_out.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::int8_t s = surface_in_out[i];
-    const std::int8_t g = gaze[i];
-    surface_in_out[i] = (g == kSplit && s == kSplit) ? kSplit
-                        : (g == kMerge || s == kMerge) ? kMerge
+    if (hybrid) {
+      const std::int8_t surface = out[i];
+      out[i] = (gaze == kSplit && surface == kSplit)   ? kSplit
+               : (gaze == kMerge || surface == kMerge) ? kMerge
                                                        : kRemain;
+    } else {
+      out[i] = gaze;
+    }
   }
 }
 

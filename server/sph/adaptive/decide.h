@@ -26,11 +26,11 @@ void decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<st
 
 // Eye-tracking based, eqs. (3.47)-(3.48), with a hysteresis ring: SPLIT where the projected particle
 // overlaps the gaze circle, MERGE where it lies wholly outside the ring (or behind the eye), REMAIN
-// in the ring.
+// in the ring. With `hybrid`, `out` holds the surface decisions on entry and receives the hybrid
+// rule: SPLIT only where both ask for it, MERGE where either does, else REMAIN (one pass, so the
+// hybrid method costs no more than gaze and surface together).
 void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
-                  double gaze_y, const AdaptiveConfig& config, std::span<std::int8_t> out);
-
-// Hybrid: SPLIT only where both ask for it, MERGE where either does, else REMAIN.
-void combineHybrid(std::span<const std::int8_t> gaze, std::span<std::int8_t> surface_in_out);
+                  double gaze_y, const AdaptiveConfig& config, bool hybrid,
+                  std::span<std::int8_t> out);
 
 }  // namespace sph

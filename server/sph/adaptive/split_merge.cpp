@@ -114,36 +114,38 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   // Split, eqs. (3.37)-(3.39): m/2, r = cbrt(r^3 / 2) (the SMALL radius), velocity kept; the
   // children sit at +- half the parent radius along the split direction, so the centre of mass
   // stays put and the pair spacing is close to the SMALL lattice spacing.
+  if (splits > 0) {
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (decision[i] != kSplit || p.size_class[i] != SizeClass::Large) continue;
-    const std::size_t c = first_child + split_slot[i];
-    const Vec3 centre = p.position[i];
-    const Vec3 dir = splitDirection(p.id[i]);
-    const float reach = symmetricReach(centre, dir, box, small_radius, 0.5f * p.radius[i]);
-    Vec3 a = centre + reach * dir;
-    Vec3 b = centre - reach * dir;
-    keepOutOfObstacles(boundary, box, small_radius, a);
-    keepOutOfObstacles(boundary, box, small_radius, b);
-    // The second child copies the parent, then both take the SMALL class.
-    p.size_class[c] = SizeClass::Small;
-    p.velocity[c] = p.velocity[i];
-    p.acceleration[c] = p.acceleration[i];
-    p.density[c] = p.density[i];
-    p.pressure[c] = p.pressure[i];
-    p.normal_length[c] = p.normal_length[i];
-    p.pressure_term[c] = p.pressure_term[i];
-    p.surface_distance[c] = p.surface_distance[i];
-    p.surface_hop[c] = p.surface_hop[i];
-    for (std::size_t k : {i, c}) {
-      p.size_class[k] = SizeClass::Small;
-      p.mass[k] = small_mass;
-      p.radius[k] = small_radius;
-      p.support[k] = small_support;
-      p.volume[k] = p.density[k] > 0.0f ? small_mass / p.density[k] : 0.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (decision[i] != kSplit || p.size_class[i] != SizeClass::Large) continue;
+      const std::size_t c = first_child + split_slot[i];
+      const Vec3 centre = p.position[i];
+      const Vec3 dir = splitDirection(p.id[i]);
+      const float reach = symmetricReach(centre, dir, box, small_radius, 0.5f * p.radius[i]);
+      Vec3 a = centre + reach * dir;
+      Vec3 b = centre - reach * dir;
+      keepOutOfObstacles(boundary, box, small_radius, a);
+      keepOutOfObstacles(boundary, box, small_radius, b);
+      // The second child copies the parent, then both take the SMALL class.
+      p.size_class[c] = SizeClass::Small;
+      p.velocity[c] = p.velocity[i];
+      p.acceleration[c] = p.acceleration[i];
+      p.density[c] = p.density[i];
+      p.pressure[c] = p.pressure[i];
+      p.normal_length[c] = p.normal_length[i];
+      p.pressure_term[c] = p.pressure_term[i];
+      p.surface_distance[c] = p.surface_distance[i];
+      p.surface_hop[c] = p.surface_hop[i];
+      for (std::size_t k : {i, c}) {
+        p.size_class[k] = SizeClass::Small;
+        p.mass[k] = small_mass;
+        p.radius[k] = small_radius;
+        p.support[k] = small_support;
+        p.volume[k] = p.density[k] > 0.0f ? small_mass / p.density[k] : 0.0f;
+      }
+      p.position[i] = a;
+      p.position[c] = b;
     }
-    p.position[i] = a;
-    p.position[c] = b;
   }
 
   // Merge, eqs. (3.40)-(3.43): mass summed, position and velocity averaged (equal masses, so the
@@ -178,7 +180,15 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     ++merges;
   }
   counts.merges = merges;
-  if (merges > 0) p.compact(keep);
+  if (merges > 0) {
+    // A few merges per step are the rule: move the last particles into the holes rather than
+    // shifting every attribute of every particle.
+    split_slot.clear();
+    for (std::size_t i = 0; i < keep.size(); ++i) {
+      if (!keep[i]) split_slot.push_back(static_cast<std::uint32_t>(i));
+    }
+    p.swapRemove(split_slot);
+  }
   return counts;
 }
 

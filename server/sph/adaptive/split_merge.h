@@ -1,6 +1,7 @@
-// Applying the decisions: split (3.37)-(3.39), merge (3.40)-(3.43), then one compact that moves
-// every attribute. Mass is conserved exactly: a LARGE particle's mass is exactly twice a SMALL one's
-// (checked when the controller is made), and split and merge only ever trade one for two.
+// Applying the decisions: split (3.37)-(3.39), merge (3.40)-(3.43), then the merged-away particles
+// leave the arrays (ParticleSet::swapRemove moves every attribute). Mass is conserved exactly: a
+// LARGE particle's mass is exactly twice a SMALL one's (checked when the controller is made), and
+// split and merge only ever trade one for two.
 #pragma once
 
 #include <cstdint>
@@ -26,7 +27,7 @@ struct SplitMergeCounts {
 // Splits every LARGE particle flagged SPLIT into two SMALL children placed symmetrically about its
 // centre, along a direction drawn from its id (deterministic, never the same point), and merges
 // every mutual pair into a LARGE particle at the pair's midpoint with the mean velocity. Children
-// and merged particles stay inside the box with their radius. `keep` is scratch.
+// and merged particles stay inside the box with their radius. `keep` and `split_slot` are scratch.
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
                                  std::span<const std::int32_t> partner,
                                  std::vector<std::uint8_t>& keep,
