@@ -64,4 +64,4 @@ else
   echo "run_main: picture of the last frame: $(pwd)/$out_dir/viewer.png"
 fi
 echo "run_main: server status lines:"
-grep -E "status" "$out_dir/server.log" | tail -n 3 || true
+grep -E "steps/s" "$out_dir/server.log" | tail -n 3 || true
