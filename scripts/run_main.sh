@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # The README's main command: installs what is missing, builds, then runs the whole system on this
 # machine: sph_server (a scene and method), gaze_bridge (synthetic gaze unless a tracker is named)
-# and sph_viewer. With a display the viewer opens a window and the run lasts until it is closed;
-# without one the viewer renders headless under Xvfb and the script says where the pictures are.
+# and sph_viewer. The default gaze is the scene's own synthetic recording (scenes/<scene>.gaze.csv,
+# made by the fixation/saccade model with targets on the water), replayed by the bridge in real
+# time and looped; name a tracker with --bridge to use real gaze. With a display the viewer opens
+# a window and the run lasts until it is closed; without one the viewer renders headless under
+# Xvfb and the script says where the pictures are.
 #
 #   bash scripts/run_main.sh [--scene NAME] [--method regular|surface|gaze|hybrid]
 #                            [--seconds S] [--bridge "ARGS"] [--out DIR]
@@ -13,7 +16,7 @@ cd "$(dirname "$0")/.."
 scene=dambreak
 method=gaze
 seconds=20          # headless only: how long to run before the snapshot
-bridge_args=""      # default: the synthetic fixation/saccade source
+bridge_args=""      # default: replay the scene's synthetic gaze recording
 out_dir=main_out
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -22,10 +25,12 @@ while [ $# -gt 0 ]; do
     --seconds) seconds="$2"; shift 2 ;;
     --bridge) bridge_args="$2"; shift 2 ;;
     --out) out_dir="$2"; shift 2 ;;
-    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "run_main: unknown argument '$1' (try --help)" >&2; exit 2 ;;
   esac
 done
+
+[ -n "$bridge_args" ] || bridge_args="--source replay --replay scenes/$scene.gaze.csv"
 
 bash scripts/install_deps.sh
 bash scripts/build.sh
@@ -40,7 +45,9 @@ cleanup() {
 trap cleanup EXIT INT TERM
 
 # The server binds 127.0.0.1:5555-5558; the bridge and the viewer connect (either may start first).
-"$bin/sph_server" --scene "$scene" --method "$method" --status-interval 5 >"$out_dir/server.log" 2>&1 &
+# Passive OpenMP waiting: the viewer and the bridge share the cores, and spinning threads that
+# wait for a descheduled partner cost the step more than they save.
+OMP_WAIT_POLICY=passive "$bin/sph_server" --scene "$scene" --method "$method" --status-interval 5 >"$out_dir/server.log" 2>&1 &
 pids+=($!)
 # shellcheck disable=SC2086  # bridge_args is a list of options on purpose
 "$bin/gaze_bridge" $bridge_args >"$out_dir/gaze_bridge.log" 2>&1 &
@@ -63,5 +70,7 @@ else
     >"$out_dir/viewer.log" 2>&1 || { echo "run_main: the viewer failed; see $out_dir/viewer.log" >&2; tail -n 20 "$out_dir/viewer.log" >&2; exit 1; }
   echo "run_main: picture of the last frame: $(pwd)/$out_dir/viewer.png"
 fi
-echo "run_main: server status lines:"
-grep -E "steps/s" "$out_dir/server.log" | tail -n 3 || true
+cleanup
+pids=()
+echo "run_main: the server's last status lines ($out_dir/server.log):"
+grep -E "steps/s" "$out_dir/server.log" | tail -n 2 || true
