@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "sph/camera.h"
+
 namespace viewer {
 
 namespace {
@@ -16,30 +18,14 @@ constexpr float kMinDistance = 0.05f;
 constexpr float kMaxDistance = 500.0f;
 }  // namespace
 
+// The same matrices the server projects gaze with (sph/camera.h), in the float GL wants.
 Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
                        const Eigen::Vector3f& up) {
-  const Eigen::Vector3f f = (target - eye).normalized();
-  const Eigen::Vector3f s = f.cross(up).normalized();
-  const Eigen::Vector3f u = s.cross(f);
-  Eigen::Matrix4f m = Eigen::Matrix4f::Identity();
-  m.block<1, 3>(0, 0) = s.transpose();
-  m.block<1, 3>(1, 0) = u.transpose();
-  m.block<1, 3>(2, 0) = -f.transpose();
-  m(0, 3) = -s.dot(eye);
-  m(1, 3) = -u.dot(eye);
-  m(2, 3) = f.dot(eye);
-  return m;
+  return sph::lookAt(eye.cast<double>(), target.cast<double>(), up.cast<double>()).cast<float>();
 }
 
 Eigen::Matrix4f perspective(float fov_y_degrees, float aspect, float near_plane, float far_plane) {
-  const float f = 1.0f / std::tan(fov_y_degrees * kPi / 360.0f);
-  Eigen::Matrix4f m = Eigen::Matrix4f::Zero();
-  m(0, 0) = f / aspect;
-  m(1, 1) = f;
-  m(2, 2) = (far_plane + near_plane) / (near_plane - far_plane);
-  m(2, 3) = 2.0f * far_plane * near_plane / (near_plane - far_plane);
-  m(3, 2) = -1.0f;
-  return m;
+  return sph::perspective(fov_y_degrees, aspect, near_plane, far_plane).cast<float>();
 }
 
 void OrbitCamera::setEyeTarget(const Eigen::Vector3f& eye, const Eigen::Vector3f& target) {
