@@ -155,3 +155,52 @@ TEST(SplitMerge, SplitDirectionIsAUnitVectorThatDependsOnTheId) {
 }
 
 }  // namespace
+
+namespace {
+
+// A SMALL particle that wants to merge but has no merging SMALL neighbour within reach would stay
+// SMALL for good; stragglers pair among themselves within two SMALL support radii.
+TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
+  sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::SizeClass::Small);
+  prepare(sim);
+  sph::ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  const float h = static_cast<float>(sim.params().classes()[0].support);
+  const std::size_t a = 0;
+  std::size_t b = n, c = n;
+  for (std::size_t i = 1; i < n; ++i) {
+    const float d = (p.position[i] - p.position[a]).norm();
+    if (b == n && d > 1.2f * h && d < 1.8f * h) b = i;
+  }
+  ASSERT_LT(b, n);
+  for (std::size_t i = 1; i < n; ++i) {
+    if ((p.position[i] - p.position[a]).norm() > 4.0f * h &&
+        (p.position[i] - p.position[b]).norm() > 4.0f * h) {
+      c = i;
+      break;
+    }
+  }
+  ASSERT_LT(c, n);
+  std::vector<std::int8_t> decision(n, sph::kRemain);
+  decision[a] = decision[b] = decision[c] = sph::kMerge;
+  std::vector<std::int32_t> partner(n, 0);
+  sph::choosePartners(p, sim.grid(), decision, partner);
+  ASSERT_EQ(partner[a], -1) << "no merging neighbour within reach";
+  ASSERT_EQ(partner[b], -1);
+  std::vector<std::uint32_t> lonely;
+  std::vector<std::int32_t> nearest;
+  sph::pairStragglers(p, decision, partner, 2.0f * h, lonely, nearest);
+  EXPECT_EQ(partner[a], static_cast<std::int32_t>(b));
+  EXPECT_EQ(partner[b], static_cast<std::int32_t>(a));
+  EXPECT_EQ(partner[c], -1) << "too far from every other straggler";
+
+  const double mass = p.totalMass();
+  std::vector<std::uint8_t> keep;
+  std::vector<std::uint32_t> slots;
+  const auto counts = sph::applySplitMerge(sim, decision, partner, keep, slots);
+  EXPECT_EQ(counts.merges, 1);
+  EXPECT_EQ(p.countOf(sph::SizeClass::Large), 1u);
+  EXPECT_EQ(p.totalMass(), mass);
+}
+
+}  // namespace

@@ -91,6 +91,12 @@ void AdaptiveController::apply(Simulation& sim) {
   stats_.merge_wanted = merge_wanted;
   if (merge_wanted > 0) {
     choosePartners(p, sim.grid(), decision_, partner_);
+    // Stragglers pair within two SMALL support radii: far enough to reach a sibling left behind
+    // in LARGE water, near enough that the merged particle lands inside the water between them.
+    const auto classes = sim.params().classes();
+    pairStragglers(p, decision_, partner_,
+                   2.0f * static_cast<float>(classes[classIndex(SizeClass::Small)].support), lonely_,
+                   lonely_nearest_);
   } else {
     std::fill(partner_.begin(), partner_.end(), -1);
   }

@@ -57,6 +57,8 @@ class AdaptiveController : public AdaptiveStep {
   std::vector<std::int32_t> partner_;
   std::vector<std::uint8_t> keep_;
   std::vector<std::uint32_t> split_slot_;
+  std::vector<std::uint32_t> lonely_;
+  std::vector<std::int32_t> lonely_nearest_;
 };
 
 // nullptr for Method::Regular.

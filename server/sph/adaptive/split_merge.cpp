@@ -80,6 +80,38 @@ void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
   }
 }
 
+void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
+                    std::span<std::int32_t> partner, float max_distance,
+                    std::vector<std::uint32_t>& lonely, std::vector<std::int32_t>& nearest) {
+  lonely.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (partner[i] < 0 && decision[i] == kMerge && p.size_class[i] == SizeClass::Small) {
+      lonely.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  if (lonely.size() < 2) return;
+  // Nearest other straggler of each (ties to the lower index); O(L^2) over a handful.
+  nearest.assign(lonely.size(), -1);
+  const float max_d2 = max_distance * max_distance;
+  for (std::size_t a = 0; a < lonely.size(); ++a) {
+    float best = max_d2;
+    for (std::size_t b = 0; b < lonely.size(); ++b) {
+      if (a == b) continue;
+      const float d2 = (p.position[lonely[a]] - p.position[lonely[b]]).squaredNorm();
+      if (d2 < best || (d2 == best && nearest[a] >= 0 && static_cast<std::int32_t>(b) < nearest[a])) {
+        best = d2;
+        nearest[a] = static_cast<std::int32_t>(b);
+      }
+    }
+  }
+  for (std::size_t a = 0; a < lonely.size(); ++a) {
+    const std::int32_t b = nearest[a];
+    if (b >= 0 && nearest[static_cast<std::size_t>(b)] == static_cast<std::int32_t>(a)) {
+      partner[lonely[a]] = static_cast<std::int32_t>(lonely[static_cast<std::size_t>(b)]);
+    }
+  }
+}
+
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
                                  std::span<const std::int32_t> partner,
                                  std::vector<std::uint8_t>& keep,
