@@ -89,6 +89,10 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
       lonely.push_back(static_cast<std::uint32_t>(i));
     }
   }
+  // The pairing below is quadratic and serial: a spray of thousands of isolated droplets must not
+  // stall the step, so at most this many (the lowest indices, deterministically) pair per step.
+  constexpr std::size_t kMaxStragglersPerStep = 512;
+  if (lonely.size() > kMaxStragglersPerStep) lonely.resize(kMaxStragglersPerStep);
   if (lonely.size() < 2) return;
   // Nearest other straggler of each (ties to the lower index); O(L^2) over a handful.
   nearest.assign(lonely.size(), -1);

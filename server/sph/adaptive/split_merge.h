@@ -22,7 +22,8 @@ void choosePartners(const ParticleSet& particles, const NeighborGrid& grid,
 // Stragglers: SMALL particles that want to merge but found no candidate at all within the
 // neighbour reach (partner -1), typically one child left behind in LARGE water, would stay SMALL
 // for good. Pairs them among themselves: mutual nearest within `max_distance`, serially in index
-// order (they are few), so the result is deterministic. `lonely` and `nearest` are scratch.
+// order (they are few; at most 512 per step), so the result is deterministic. `lonely` and
+// `nearest` are scratch.
 void pairStragglers(const ParticleSet& particles, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, float max_distance,
                     std::vector<std::uint32_t>& lonely, std::vector<std::int32_t>& nearest);
