@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     for (const sph::Scene& sc : loaded) {
       for (const auto& m : methodsFor(sc)) {
         ++runs;
-        if ((m == "gaze" || m == "hybrid") && !override_gaze && !scene_gaze.contains(sc.name)) {
+        if (bench::methodNeedsGaze(m) && !override_gaze && !scene_gaze.contains(sc.name)) {
           if (sc.gaze_recording.empty()) {
             throw std::invalid_argument("scene '" + sc.name + "' names no gaze_recording for method '" +
                                         m + "': pass --gaze FILE");
@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
         bench::RunOptions options;
         options.frames = frames;
         options.threads = threads;
-        if (method == "gaze" || method == "hybrid") {
+        if (bench::methodNeedsGaze(method)) {
           options.gaze = override_gaze ? override_gaze.get() : scene_gaze.at(sc.name).get();
         }
         const int total_frames = frames > 0 ? frames : sc.frames;

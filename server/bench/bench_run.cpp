@@ -23,6 +23,11 @@ void requireKnownMethod(const std::string& method) {
   throw std::invalid_argument("unknown method '" + method + "' (known: " + list + ")");
 }
 
+bool methodNeedsGaze(const std::string& method) {
+  sph::Method m;
+  return sph::methodByName(method, m) && sph::usesGaze(m);
+}
+
 void measureState(const sph::Simulation& sim, FrameRecord& r) {
   const sph::ParticleSet& p = sim.particles();
   const sph::BoxState box = sim.boxNow();
@@ -62,7 +67,7 @@ RunResult runScene(const sph::Scene& scene, const std::string& method, const Run
 
   sph::Method m = sph::Method::Regular;
   sph::methodByName(method, m);
-  const bool needs_gaze = m == sph::Method::Gaze || m == sph::Method::Hybrid;
+  const bool needs_gaze = sph::usesGaze(m);
   if (needs_gaze && (options.gaze == nullptr || options.gaze->samples.empty())) {
     throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" +
                                 scene.name + "' names none; pass --gaze FILE)");

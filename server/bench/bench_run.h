@@ -54,6 +54,8 @@ struct RunOptions {
 const std::vector<std::string>& knownMethods();
 // Throws std::invalid_argument naming the known methods when `method` is not one of them.
 void requireKnownMethod(const std::string& method);
+// True for a known method that needs a gaze recording (sph::usesGaze).
+bool methodNeedsGaze(const std::string& method);
 
 // The scene's method settings (scene.adaptive) apply; gaze and hybrid need options.gaze.
 RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options);

@@ -83,12 +83,12 @@ std::size_t ParticleSet::compact(std::span<const std::uint8_t> keep) {
   return n;
 }
 
-void ParticleSet::swapRemove(std::span<const std::uint32_t> ascending) {
-  std::size_t size_now = size();
-  for (auto it = ascending.rbegin(); it != ascending.rend(); ++it) {
-    const std::size_t hole = *it;
-    if (hole >= size_now) throw std::out_of_range("swapRemove: index past the end");
-    const std::size_t last = --size_now;
+void ParticleSet::swapRemove(std::span<const std::uint8_t> keep) {
+  if (keep.size() != size()) throw std::invalid_argument("swapRemove: keep size mismatch");
+  // Every index above `hole` has been handled when we get there, so the last particle is a kept one.
+  for (std::size_t hole = keep.size(); hole-- > 0;) {
+    if (keep[hole]) continue;
+    const std::size_t last = size() - 1;
     forEachAttribute([&](auto& v) {
       if (hole != last) v[hole] = v[last];
       v.pop_back();

@@ -39,10 +39,10 @@ class ParticleSet {
   void permute(std::span<const std::uint32_t> order);
   // Keeps the particles with keep[i] != 0, in order; returns the new size.
   std::size_t compact(std::span<const std::uint8_t> keep);
-  // Removes the particles at `ascending` (sorted, unique indices) by moving the last particle into
-  // each hole, from the highest index down: O(removed) instead of O(size), order not kept (the
+  // Removes the particles with keep[i] == 0 by moving the last particle into each hole, from the
+  // highest index down: attributes move O(removed) times instead of O(size), order not kept (the
   // periodic re-sort restores locality). Deterministic for a given input.
-  void swapRemove(std::span<const std::uint32_t> ascending);
+  void swapRemove(std::span<const std::uint8_t> keep);
 
   // Sum of masses in double precision (exact for the two-class masses of the presets up to rounding
   // of the float attributes themselves; tests compare against class counts).

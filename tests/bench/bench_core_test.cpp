@@ -42,6 +42,11 @@ TEST(BenchRun, EveryMethodIsKnownAndOthersAreRejected) {
     EXPECT_NO_THROW(bench::requireKnownMethod(m)) << m;
   }
   EXPECT_THROW(bench::requireKnownMethod("eye"), std::invalid_argument);
+  EXPECT_TRUE(bench::methodNeedsGaze("gaze"));
+  EXPECT_TRUE(bench::methodNeedsGaze("hybrid"));
+  EXPECT_FALSE(bench::methodNeedsGaze("surface"));
+  EXPECT_FALSE(bench::methodNeedsGaze("regular"));
+  EXPECT_FALSE(bench::methodNeedsGaze("eye"));
 }
 
 TEST(BenchRun, GazeMethodWithoutARecordingIsAClearError) {

@@ -17,7 +17,7 @@ TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
   bench::RunOptions options;
   options.frames = 900;
   options.threads = 2;
-  if (method == "gaze" || method == "hybrid") {
+  if (bench::methodNeedsGaze(method)) {
     recording = gaze::readGazeRecording(s.gaze_recording);
     options.gaze = &recording;
   }

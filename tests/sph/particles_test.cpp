@@ -111,13 +111,13 @@ TEST(ParticleSet, TotalMassAndClassCounts) {
 
 TEST(ParticleSet, SwapRemoveMovesTheLastParticlesIntoTheHoles) {
   sph::ParticleSet p = makeSet(8, 16);
-  const std::vector<std::uint32_t> removed = {1, 4, 7};
-  p.swapRemove(removed);
+  const std::vector<std::uint8_t> keep = {1, 0, 1, 1, 0, 1, 1, 0};  // remove 1, 4, 7
+  p.swapRemove(keep);
   ASSERT_EQ(p.size(), 5u);
   // From the highest index down: 7 is the last (just dropped), 6 fills 4, 5 fills 1.
   const std::uint32_t expected[] = {0, 5, 2, 3, 6};
   for (std::size_t k = 0; k < p.size(); ++k) expectParticleIs(p, k, expected[k]);
-  EXPECT_THROW(p.swapRemove(std::vector<std::uint32_t>{9}), std::out_of_range);
+  EXPECT_THROW(p.swapRemove(std::vector<std::uint8_t>(9, 1)), std::invalid_argument);
 }
 
 TEST(ParticleSet, AppendZeroedGivesFreshIdsAndZeroState) {

@@ -53,6 +53,8 @@ std::vector<std::string> methodNames() {
 
 SizeClass startClass(Method m) { return m == Method::Regular ? SizeClass::Small : SizeClass::Large; }
 
+bool usesGaze(Method m) { return m == Method::Gaze || m == Method::Hybrid; }
+
 const char* gazeModeName(GazeMode m) {
   switch (m) {
     case GazeMode::None: return "none";

@@ -18,6 +18,8 @@ bool methodByName(const std::string& name, Method& out);
 std::vector<std::string> methodNames();
 // Regular runs all SMALL; the adaptive methods start LARGE and split where they need detail.
 SizeClass startClass(Method m);
+// Gaze and hybrid refine where the eye looks, so they need a gaze source.
+bool usesGaze(Method m);
 
 struct AdaptiveConfig {
   // Character field (3.45), table 3.2.

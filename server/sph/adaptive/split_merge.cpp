@@ -219,11 +219,7 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   if (merges > 0) {
     // A few merges per step are the rule: move the last particles into the holes rather than
     // shifting every attribute of every particle.
-    split_slot.clear();
-    for (std::size_t i = 0; i < keep.size(); ++i) {
-      if (!keep[i]) split_slot.push_back(static_cast<std::uint32_t>(i));
-    }
-    p.swapRemove(split_slot);
+    p.swapRemove(keep);
   }
   return counts;
 }
