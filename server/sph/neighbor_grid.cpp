@@ -5,6 +5,7 @@
 #include <immintrin.h>
 #endif
 #include <cmath>
+#include <omp.h>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,7 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   particle_cell_.reserve(particle_capacity);
   for (auto* v : {&sorted_x_, &sorted_y_, &sorted_z_, &sorted_support_}) v->reserve(particle_capacity);
   neighbor_count_.reserve(particle_capacity);
+  neighbor_start_.reserve(particle_capacity);
   neighbor_index_.resize(particle_capacity * stride_ + 16);
 }
 
@@ -52,6 +54,7 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   particle_cell_.resize(n);
   cell_particles_.resize(n);
   neighbor_count_.resize(n);
+  neighbor_start_.resize(n);
 
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) particle_cell_[i] = cellOf(particles.position[i]);
@@ -84,10 +87,24 @@ void NeighborGrid::build(const ParticleSet& particles) {
   for (;;) {
     if (neighbor_index_.size() < n * stride_) neighbor_index_.resize(n * stride_);
     std::uint32_t max_count = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_count)
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t count = gatherNeighbors(particles, i);
-      max_count = std::max(max_count, count);
+#pragma omp parallel reduction(max : max_count)
+    {
+      // Contiguous ranges, one per thread, as schedule(static) would give.
+      const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+      const std::size_t begin = n * t / threads;
+      const std::size_t end = n * (t + 1) / threads;
+      std::size_t cursor = begin * stride_;
+      const std::size_t region_end = end * stride_;
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::uint32_t count = gatherNeighbors(particles, i, neighbor_index_.data() + cursor, region_end - cursor);
+        max_count = std::max(max_count, count);
+        // A list keeps at most stride - 1 entries, so the ones before i used at most
+        // (i - begin) (stride - 1) slots and list i always has stride slots left in the range.
+        neighbor_count_[i] = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(stride_ - 1));
+        neighbor_start_[i] = cursor;
+        cursor += neighbor_count_[i];
+      }
     }
     // The last slot is scratch for the branch-free writes, so a full list must stay below it.
     if (max_count < stride_) break;
@@ -97,7 +114,8 @@ void NeighborGrid::build(const ParticleSet& particles) {
   }
 }
 
-std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::size_t i) {
+std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::size_t i, std::uint32_t* out,
+                                            std::size_t room) const {
   const Vec3 pi = particles.position[i];
   const float hi = particles.support[i];
   const std::uint32_t cell = particle_cell_[i];
@@ -108,24 +126,22 @@ std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::s
   const int x0 = std::max(cx - R, 0);
   const int x1 = std::min(cx + R, dims_[0] - 1);
 
-  std::uint32_t* out = neighbor_index_.data() + i * stride_;
   const auto self = static_cast<std::uint32_t>(i);
   std::uint32_t count = 0;
   for (int z = std::max(cz - R, 0); z <= std::min(cz + R, dims_[2] - 1); ++z) {
     for (int y = std::max(cy - R, 0); y <= std::min(cy + R, dims_[1] - 1); ++y) {
       // Cells x0..x1 of one row are contiguous in the sorted list.
       const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
-      count = gatherRow(cell_start_[row + x0], cell_start_[row + x1 + 1], pi, hi, self, out, count);
+      count = gatherRow(cell_start_[row + x0], cell_start_[row + x1 + 1], pi, hi, self, out, room, count);
     }
   }
-  neighbor_count_[i] = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(stride_));
   return count;
 }
 
 #if defined(__AVX512F__) && !defined(SPH_SCALAR_NEIGHBORS)
 std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi,
                                       float hi, std::uint32_t self, std::uint32_t* out,
-                                      std::uint32_t count) const {
+                                      std::size_t room, std::uint32_t count) const {
   // 16 candidates at a time; compress-store keeps the accepted ones in candidate order, so the
   // lists are the same as the scalar loop's (and the same for any thread count).
   const __m512 px = _mm512_set1_ps(pi.x());
@@ -149,10 +165,11 @@ std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, co
     const __mmask16 accept = _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) &
                              _mm512_cmpneq_epi32_mask(j, self_v);
     const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accept));
-    // Compress in a register and store all 16 lanes while the list has room for them (a
-    // compress-store straight to memory is several times slower on current cores); near the end
-    // of the list store only the accepted lanes, so no write reaches the next particle's list.
-    if (count + 16 <= stride_) {
+    // Compress in a register and store all 16 lanes while the thread's range has room for them
+    // (a compress-store straight to memory is several times slower on current cores; the lanes
+    // past the list land where the next list will be written); near the end of the range store
+    // only the accepted lanes, so no write reaches another thread's range.
+    if (count + 16 <= room) {
       _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
     } else if (count + accepted <= capacity) {
       alignas(64) std::uint32_t lanes[16];
@@ -166,7 +183,7 @@ std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, co
 #else
 std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi,
                                       float hi, std::uint32_t self, std::uint32_t* out,
-                                      std::uint32_t count) const {
+                                      std::size_t /*room*/, std::uint32_t count) const {
   const auto last_slot = static_cast<std::uint32_t>(stride_ - 1);
   for (std::uint32_t k = begin; k < end; ++k) {
     const float dx = sorted_x_[k] - pi.x();

@@ -1,0 +1,77 @@
+// The neighbour lists are packed back to back, one run per thread: whatever the thread count and
+// however often the stride has to grow, each list holds exactly the pairs within (hi + hj) / 2
+// (eq. (3.34)), in the same order.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "sph/neighbor_grid.h"
+#include "sph/params.h"
+#include "sph/particles.h"
+
+namespace {
+
+// 3,000 particles of both classes in a 0.12 m cube: several times the rest density, so lists
+// outgrow the starting stride of 96 and the grid must regrow it.
+sph::ParticleSet denseCloud() {
+  const auto classes = sph::thesisPreset().classes();
+  sph::ParticleSet particles(3000);
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<float> pos(0.0f, 0.12f);
+  std::bernoulli_distribution large(0.3);
+  while (particles.size() < particles.capacity()) {
+    const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
+    particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+  }
+  return particles;
+}
+
+std::vector<std::vector<std::uint32_t>> listsWithThreads(const sph::ParticleSet& particles, int threads,
+                                                         std::size_t* stride_growths) {
+  const auto classes = sph::thesisPreset().classes();
+  sph::Aabb bounds;
+  bounds.min = Eigen::Vector3d::Zero();
+  bounds.max = Eigen::Vector3d::Constant(0.12);
+  sph::NeighborGrid grid;
+  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), particles.size());
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  grid.build(particles);
+  omp_set_num_threads(previous);
+  *stride_growths = grid.strideGrowths();
+  std::vector<std::vector<std::uint32_t>> lists(particles.size());
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const auto list = grid.neighbors(i);
+    lists[i].assign(list.begin(), list.end());
+  }
+  return lists;
+}
+
+TEST(NeighborGrid, PackedListsAreExactForAnyThreadCount) {
+  const sph::ParticleSet p = denseCloud();
+  std::size_t growths = 0;
+  const auto one = listsWithThreads(p, 1, &growths);
+  EXPECT_GE(growths, 1u) << "the cloud should be dense enough to outgrow the starting stride";
+
+  // Brute force: every pair within reach, in any order.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::vector<std::uint32_t> expected;
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      const float reach = 0.5f * (p.support[i] + p.support[j]);
+      if (j != i && (p.position[i] - p.position[j]).squaredNorm() <= reach * reach) {
+        expected.push_back(static_cast<std::uint32_t>(j));
+      }
+    }
+    std::vector<std::uint32_t> listed = one[i];
+    std::sort(listed.begin(), listed.end());
+    ASSERT_EQ(listed, expected) << "particle " << i;
+  }
+  for (int threads : {2, 3}) {
+    EXPECT_EQ(listsWithThreads(p, threads, &growths), one) << threads << " threads";
+  }
+}
+
+}  // namespace
