@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "sph/collision.h"
+#include "sph/fluid_stages_avx512.h"
 
 namespace sph {
 
@@ -13,6 +14,34 @@ KernelTable makeKernelTable(const SimParams& params) {
   for (int c = 0; c < kSizeClassCount; ++c) table[c] = KernelConstants::forSupport(classes[c].support);
   return table;
 }
+
+bool fluidStagesVectorized() {
+#ifdef SPH_AVX512_FLUID
+  return true;
+#else
+  return false;
+#endif
+}
+
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
+                            const NeighborGrid& grid, ParticleSet& particles) {
+#ifdef SPH_AVX512_FLUID
+  avx512::computeDensityPressure(params, kernels, grid, particles);
+#else
+  scalar::computeDensityPressure(params, kernels, grid, particles);
+#endif
+}
+
+void computeAccelerations(const SimParams& params, const KernelTable& kernels,
+                          const NeighborGrid& grid, ParticleSet& particles, bool propagate_surface_distance) {
+#ifdef SPH_AVX512_FLUID
+  avx512::computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
+#else
+  scalar::computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
+#endif
+}
+
+namespace scalar {
 
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
                             const NeighborGrid& grid, ParticleSet& p) {
@@ -104,6 +133,8 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     if (propagate_surface_distance) p.surface_hop[i] = surface_hop;
   }
 }
+
+}  // namespace scalar
 
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,
                          ParticleSet& p) {

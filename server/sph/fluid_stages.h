@@ -30,6 +30,21 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
                           const NeighborGrid& grid, ParticleSet& particles,
                           bool propagate_surface_distance = false);
 
+// The two pair-sum stages above, one pair at a time: the code of builds without AVX-512 and the
+// reference the vector code is tested against (same sums; the vector code adds in another order
+// and takes 1/|r| from a refined estimate, so results agree to float rounding, not bit for bit).
+namespace scalar {
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
+                            const NeighborGrid& grid, ParticleSet& particles);
+void computeAccelerations(const SimParams& params, const KernelTable& kernels,
+                          const NeighborGrid& grid, ParticleSet& particles,
+                          bool propagate_surface_distance = false);
+}  // namespace scalar
+
+// True when computeDensityPressure and computeAccelerations run 16 pairs per instruction
+// (AVX-512 builds); false when they are the scalar forms.
+bool fluidStagesVectorized();
+
 // Semi-implicit Euler, eqs. (3.21)-(3.22), then collisions with obstacles and the box at `box`.
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,
                          ParticleSet& particles);

@@ -1,0 +1,229 @@
+#include "sph/fluid_stages_avx512.h"
+
+#ifdef SPH_AVX512_FLUID
+
+// GCC 12's AVX-512 headers build _mm512_max_ps and the reductions on *_undefined_ps(), which its
+// own flow analysis reports as maybe-uninitialized once inlined (GCC bug 105593).
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <immintrin.h>
+
+#include <cmath>
+#include <limits>
+
+namespace sph::avx512 {
+
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(float), "positions and velocities are gathered as packed floats");
+
+// KernelConstants of one size class in all 16 lanes. The kernels clamp (h^2 - r^2) and (h - r) at
+// zero instead of branching: a mixed pair may lie beyond the smaller support (eq. (3.34)), and
+// there every kernel of that class is zero, as in the scalar forms of kernels.h.
+struct LaneKernel {
+  __m512 h, h2, poly6, poly6_grad, spiky_grad, visc_lap;
+
+  explicit LaneKernel(const KernelConstants& k)
+      : h(_mm512_set1_ps(k.h)),
+        h2(_mm512_set1_ps(k.h2)),
+        poly6(_mm512_set1_ps(k.poly6)),
+        poly6_grad(_mm512_set1_ps(k.poly6_grad)),
+        spiky_grad(_mm512_set1_ps(k.spiky_grad)),
+        visc_lap(_mm512_set1_ps(k.visc_lap)) {}
+};
+
+// The kernel terms of one batch of pairs; the same fields the scalar force loop computes.
+struct PairKernels {
+  __m512 spiky, visc, cgrad, clap;
+};
+
+inline __m512 clampZero(__m512 v) { return _mm512_max_ps(v, _mm512_setzero_ps()); }
+
+inline __m512 poly6(const LaneKernel& k, __m512 r2) {  // eq. (3.1)
+  const __m512 d = clampZero(k.h2 - r2);
+  return k.poly6 * d * d * d;
+}
+
+inline PairKernels forceKernels(const LaneKernel& k, __m512 r2, __m512 rl, __m512 inv_r) {
+  const __m512 dr = clampZero(k.h - rl);
+  const __m512 d2 = clampZero(k.h2 - r2);
+  PairKernels out;
+  out.spiky = k.spiky_grad * dr * dr * inv_r;                                  // eq. (3.4)
+  out.visc = k.visc_lap * dr;                                                  // eq. (3.5)
+  out.cgrad = k.poly6_grad * d2 * d2;                                          // eq. (3.2)
+  out.clap = k.poly6_grad * d2 * (_mm512_set1_ps(3.0f) * k.h2 - _mm512_set1_ps(7.0f) * r2);  // (3.3)
+  return out;
+}
+
+// Averaged kernel of eq. (3.35) on the lanes where the neighbour is of the other class.
+inline __m512 average(__mmask16 mixed, __m512 own, __m512 other) {
+  return _mm512_mask_mul_ps(own, mixed, _mm512_set1_ps(0.5f), own + other);
+}
+
+inline __mmask16 liveLanes(std::uint32_t left) {
+  return left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
+}
+
+// base[idx[l]] on live lanes, 0 on the others.
+inline __m512 gather(__mmask16 live, __m512i idx, const float* base) {
+  return _mm512_mask_i32gather_ps(_mm512_setzero_ps(), live, idx, base, 4);
+}
+
+// Positions and velocities are packed x, y, z triples: the gather index is 3 j.
+inline __m512i tripleIndex(__m512i idx) { return _mm512_add_epi32(idx, _mm512_add_epi32(idx, idx)); }
+
+// 1 / |r| from r^2: the 14-bit estimate and one Newton step (about 1 ulp), 0 where r = 0 (the
+// direction is undefined there and the pair exerts no force, as in spikyGradFactor).
+inline __m512 inverseLength(__m512 r2) {
+  const __m512 y = _mm512_rsqrt14_ps(r2);
+  const __m512 refined = y * (_mm512_set1_ps(1.5f) - _mm512_set1_ps(0.5f) * r2 * y * y);
+  return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(r2, _mm512_setzero_ps(), _CMP_GT_OQ), refined);
+}
+
+}  // namespace
+
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
+                            const NeighborGrid& grid, ParticleSet& p) {
+  const float rho0 = static_cast<float>(params.rest_density);
+  const float k = static_cast<float>(params.gas_stiffness);
+  const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
+  const float* pos = p.position.data()->data();
+  const float* support = p.support.data();
+  const float* mass = p.mass.data();
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const int ci = classIndex(p.size_class[i]);
+    const LaneKernel& own = lanes[ci];
+    const LaneKernel& other = lanes[1 - ci];
+    const __m512 xi = _mm512_set1_ps(pos[3 * i]);
+    const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
+    const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
+    const __m512 hi = _mm512_set1_ps(support[i]);
+    const auto list = grid.neighbors(i);
+    const auto count = static_cast<std::uint32_t>(list.size());
+    __m512 sum = _mm512_setzero_ps();
+    for (std::uint32_t b = 0; b < count; b += 16) {
+      const __mmask16 live = liveLanes(count - b);
+      const __m512i j = _mm512_maskz_loadu_epi32(live, list.data() + b);
+      const __m512i j3 = tripleIndex(j);
+      const __m512 dx = xi - gather(live, j3, pos);
+      const __m512 dy = yi - gather(live, j3, pos + 1);
+      const __m512 dz = zi - gather(live, j3, pos + 2);
+      const __m512 r2 = dx * dx + dy * dy + dz * dz;
+      __m512 w = poly6(own, r2);
+      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, gather(live, j, support), hi, _CMP_NEQ_OQ);
+      if (mixed) w = average(mixed, w, poly6(other, r2));
+      sum = _mm512_fmadd_ps(gather(live, j, mass), w, sum);  // eq. (3.11); dead lanes have mass 0
+    }
+    const float rho = p.mass[i] * sph::poly6(kernels[ci], 0.0f) + _mm512_reduce_add_ps(sum);
+    const float pressure = k * (rho - rho0);  // eq. (3.12)
+    p.density[i] = rho;
+    p.pressure[i] = pressure;
+    p.pressure_term[i] = pressure / (rho * rho);
+    p.volume[i] = p.mass[i] / rho;
+  }
+}
+
+void computeAccelerations(const SimParams& params, const KernelTable& kernels,
+                          const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
+  const float mu = static_cast<float>(params.viscosity);
+  const float sigma = static_cast<float>(params.surface_tension);
+  const float threshold = static_cast<float>(params.surfaceThreshold());
+  const bool tension = params.surface_tension_enabled && sigma > 0.0f;
+  const Vec3 gravity(0.0f, static_cast<float>(params.gravity), 0.0f);
+  const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
+  const float* pos = p.position.data()->data();
+  const float* vel = p.velocity.data()->data();
+  const float* support = p.support.data();
+  const float* mass = p.mass.data();
+  const float* volume = p.volume.data();
+  const float* pressure_term = p.pressure_term.data();
+  const float* surface_distance = p.surface_distance.data();
+  const std::size_t n = p.size();
+
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const int ci = classIndex(p.size_class[i]);
+    const LaneKernel& own = lanes[ci];
+    const LaneKernel& other = lanes[1 - ci];
+    const __m512 xi = _mm512_set1_ps(pos[3 * i]);
+    const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
+    const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
+    const __m512 uxi = _mm512_set1_ps(vel[3 * i]);
+    const __m512 uyi = _mm512_set1_ps(vel[3 * i + 1]);
+    const __m512 uzi = _mm512_set1_ps(vel[3 * i + 2]);
+    const __m512 hi = _mm512_set1_ps(support[i]);
+    const __m512 pti = _mm512_set1_ps(pressure_term[i]);
+
+    const __m512 zero = _mm512_setzero_ps();
+    __m512 pax = zero, pay = zero, paz = zero;  // f_pressure / rho_i, negated at the end
+    __m512 vx = zero, vy = zero, vz = zero;     // f_viscosity / mu
+    __m512 nx = zero, ny = zero, nz = zero;     // n = grad c, eq. (3.17)
+    __m512 lap = zero;                          // lap c, eq. (3.18), without the self term
+    __m512 hop = _mm512_set1_ps(std::numeric_limits<float>::infinity());
+
+    const auto list = grid.neighbors(i);
+    const auto count = static_cast<std::uint32_t>(list.size());
+    for (std::uint32_t b = 0; b < count; b += 16) {
+      const __mmask16 live = liveLanes(count - b);
+      const __m512i j = _mm512_maskz_loadu_epi32(live, list.data() + b);
+      const __m512i j3 = tripleIndex(j);
+      const __m512 dx = xi - gather(live, j3, pos);
+      const __m512 dy = yi - gather(live, j3, pos + 1);
+      const __m512 dz = zi - gather(live, j3, pos + 2);
+      const __m512 r2 = dx * dx + dy * dy + dz * dz;
+      const __m512 inv_r = inverseLength(r2);
+      const __m512 rl = r2 * inv_r;
+      PairKernels kern = forceKernels(own, r2, rl, inv_r);
+      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, gather(live, j, support), hi, _CMP_NEQ_OQ);
+      if (mixed) {
+        const PairKernels o = forceKernels(other, r2, rl, inv_r);
+        kern = {average(mixed, kern.spiky, o.spiky), average(mixed, kern.visc, o.visc),
+                average(mixed, kern.cgrad, o.cgrad), average(mixed, kern.clap, o.clap)};
+      }
+      // Dead lanes gather mass and volume 0, so every term below is 0 there.
+      const __m512 mj = gather(live, j, mass);
+      const __m512 volj = gather(live, j, volume);
+      // Pressure, eq. (3.13) divided by rho_i.
+      const __m512 s = mj * (pti + gather(live, j, pressure_term)) * kern.spiky;
+      pax = _mm512_fmadd_ps(s, dx, pax);
+      pay = _mm512_fmadd_ps(s, dy, pay);
+      paz = _mm512_fmadd_ps(s, dz, paz);
+      // Viscosity, eq. (3.14).
+      const __m512 sv = volj * kern.visc;
+      vx = _mm512_fmadd_ps(sv, gather(live, j3, vel) - uxi, vx);
+      vy = _mm512_fmadd_ps(sv, gather(live, j3, vel + 1) - uyi, vy);
+      vz = _mm512_fmadd_ps(sv, gather(live, j3, vel + 2) - uzi, vz);
+      // Colour field gradient and Laplacian, eqs. (3.16)-(3.18).
+      const __m512 sc = volj * kern.cgrad;
+      nx = _mm512_fmadd_ps(sc, dx, nx);
+      ny = _mm512_fmadd_ps(sc, dy, ny);
+      nz = _mm512_fmadd_ps(sc, dz, nz);
+      lap = _mm512_fmadd_ps(volj, kern.clap, lap);
+      if (propagate_surface_distance) {
+        hop = _mm512_mask_min_ps(hop, live, hop, gather(live, j, surface_distance) + rl);
+      }
+    }
+
+    const float rhoi = p.density[i];
+    const Vec3 pressure_acc(-_mm512_reduce_add_ps(pax), -_mm512_reduce_add_ps(pay), -_mm512_reduce_add_ps(paz));
+    const Vec3 viscous(_mm512_reduce_add_ps(vx), _mm512_reduce_add_ps(vy), _mm512_reduce_add_ps(vz));
+    const Vec3 normal(_mm512_reduce_add_ps(nx), _mm512_reduce_add_ps(ny), _mm512_reduce_add_ps(nz));
+    // The colour field sums over every j including i (3.16); only the Laplacian has a self term.
+    const float colour_laplacian = p.volume[i] * sph::poly6Laplacian(kernels[ci], 0.0f) + _mm512_reduce_add_ps(lap);
+
+    Vec3 acc = pressure_acc + (mu / rhoi) * viscous + gravity;  // gravity: f = rho g, eq. (3.15)
+    const float normal_len = normal.norm();
+    if (tension && normal_len >= threshold) {
+      // Surface tension, eq. (3.19): f = -sigma lap(c) n / |n|, applied where |n| >= l (3.36).
+      acc += (-sigma * colour_laplacian / (normal_len * rhoi)) * normal;
+    }
+    p.acceleration[i] = acc;
+    p.normal_length[i] = normal_len;
+    if (propagate_surface_distance) p.surface_hop[i] = _mm512_reduce_min_ps(hop);
+  }
+}
+
+}  // namespace sph::avx512
+
+#endif  // SPH_AVX512_FLUID
