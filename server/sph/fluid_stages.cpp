@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "sph/coincident_pairs.h"
 #include "sph/collision.h"
 #include "sph/fluid_stages_avx512.h"
 
@@ -113,7 +114,11 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       }
       const float volj = p.volume[j];
       // Pressure, eq. (3.13) divided by rho_i: symmetric in i and j, so momentum is conserved.
-      pressure_acc -= (p.mass[j] * (pi_over_rho2 + p.pressure_term[j]) * spiky) * r;
+      if (r2 > 0.0f) {
+        pressure_acc -= (p.mass[j] * (pi_over_rho2 + p.pressure_term[j]) * spiky) * r;
+      } else {
+        pressure_acc += coincidentPressureAcceleration(p, kernels, i, j);
+      }
       // Viscosity, eq. (3.14).
       viscous += (volj * visc) * (p.velocity[j] - ui);
       // Colour field gradient and Laplacian, eqs. (3.16)-(3.18).

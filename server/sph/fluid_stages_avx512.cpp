@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sph/coincident_pairs.h"
+
 namespace sph::avx512 {
 
 namespace {
@@ -161,6 +163,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     __m512 nx = zero, ny = zero, nz = zero;     // n = grad c, eq. (3.17)
     __m512 lap = zero;                          // lap c, eq. (3.18), without the self term
     __m512 hop = _mm512_set1_ps(std::numeric_limits<float>::infinity());
+    Vec3 contact_acc = Vec3::Zero();            // from neighbours on the same point
 
     const auto list = grid.neighbors(i);
     const auto count = static_cast<std::uint32_t>(list.size());
@@ -172,6 +175,12 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       const __m512 dy = yi - gather(live, j3, pos + 1);
       const __m512 dz = zi - gather(live, j3, pos + 2);
       const __m512 r2 = dx * dx + dy * dy + dz * dz;
+      const __mmask16 coincident = _mm512_mask_cmp_ps_mask(live, r2, _mm512_setzero_ps(), _CMP_EQ_OQ);
+      if (coincident) {  // rare: pairs on one point (see coincident_pairs.h); their lanes add 0 below
+        for (std::uint32_t bits = coincident; bits != 0; bits &= bits - 1) {
+          contact_acc += coincidentPressureAcceleration(p, kernels, i, list[b + static_cast<std::uint32_t>(__builtin_ctz(bits))]);
+        }
+      }
       const __m512 inv_r = inverseLength(r2);
       const __m512 rl = r2 * inv_r;
       PairKernels kern = forceKernels(own, r2, rl, inv_r);
@@ -206,7 +215,8 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     }
 
     const float rhoi = p.density[i];
-    const Vec3 pressure_acc(-_mm512_reduce_add_ps(pax), -_mm512_reduce_add_ps(pay), -_mm512_reduce_add_ps(paz));
+    const Vec3 pressure_acc =
+        contact_acc - Vec3(_mm512_reduce_add_ps(pax), _mm512_reduce_add_ps(pay), _mm512_reduce_add_ps(paz));
     const Vec3 viscous(_mm512_reduce_add_ps(vx), _mm512_reduce_add_ps(vy), _mm512_reduce_add_ps(vz));
     const Vec3 normal(_mm512_reduce_add_ps(nx), _mm512_reduce_add_ps(ny), _mm512_reduce_add_ps(nz));
     // The colour field sums over every j including i (3.16); only the Laplacian has a self term.

@@ -5,18 +5,12 @@
 #include <limits>
 
 #include "sph/adaptive/decide.h"
+#include "sph/coincident_pairs.h"
 #include "sph/collision.h"
 
 namespace sph {
 
 namespace {
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 // Largest t such that centre +- t * dir both lie inside the box shrunk by `margin` (the child
 // radius), capped at `wanted`. The parent already sits inside the box shrunk by its own, larger
@@ -44,16 +38,7 @@ void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float rad
 
 }  // namespace
 
-Vec3 splitDirection(std::uint32_t id) {
-  const std::uint64_t h = splitmix64(id);
-  // Two 24-bit uniforms -> a point on the unit sphere (Archimedes: z uniform in [-1, 1]).
-  const float u1 = static_cast<float>(h & 0xFFFFFFu) / 16777216.0f;
-  const float u2 = static_cast<float>((h >> 24) & 0xFFFFFFu) / 16777216.0f;
-  const float z = 1.0f - 2.0f * u1;
-  const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
-  const float phi = 6.2831853f * u2;
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
+Vec3 splitDirection(std::uint32_t id) { return hashedUnitVector(id); }
 
 void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
                     std::span<const std::int8_t> decision, std::span<std::int32_t> partner) {
