@@ -60,9 +60,11 @@ class NeighborGrid {
   float cell_size_ = 1.0f;
   float inv_cell_size_ = 1.0f;
   int dims_[3] = {1, 1, 1};
-  // Cells are half a support radius wide: a 5x5x5 block of them covers the reach with about 40 %
-  // fewer candidates than 3x3x3 cells of a full radius.
-  static constexpr int kCellsPerSupport = 2;
+  // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
+  // cells. Half-radius cells (25 rows of 5) test about 40 % fewer candidates, but each row costs a
+  // call and a partly empty 16-lane batch: measured on the dambreak state, full cells were 20-30 %
+  // faster for 20,000 SMALL particles and about 35 % faster for the gaze method's mixed set.
+  static constexpr int kCellsPerSupport = 1;
   std::size_t stride_ = 96;
   std::size_t stride_growths_ = 0;
 
