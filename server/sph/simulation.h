@@ -42,6 +42,7 @@ class Simulation {
   // The surface criterion's distance field advances one neighbour hop per step inside the force
   // loop (see computeAccelerations); adaptive steps that use it switch it on.
   void setSurfaceDistanceTracking(bool on) { track_surface_distance_ = on; }
+  bool surfaceDistanceTracking() const { return track_surface_distance_; }
 
   void step();
 

@@ -224,15 +224,18 @@ TEST(AdaptiveMethods, LostGazeIsHeldThenFallsBackToSurface) {
   rig.controller->setGaze(g);
   rig.sim->step();
   EXPECT_EQ(rig.controller->lastStats().gaze_mode, sph::GazeMode::Tracking);
+  EXPECT_FALSE(rig.sim->surfaceDistanceTracking()) << "a tracked gaze needs no surface field";
   g.age_s = 0.3;
   rig.controller->setGaze(g);
   rig.sim->step();
   EXPECT_EQ(rig.controller->lastStats().gaze_mode, sph::GazeMode::Holding);
   EXPECT_EQ(rig.controller->lastStats().gaze_x, 0.5);
+  EXPECT_TRUE(rig.sim->surfaceDistanceTracking()) << "the hold warms the field for the fallback";
   g.age_s = 0.8;
   rig.controller->setGaze(g);
   rig.sim->step();
   EXPECT_EQ(rig.controller->lastStats().gaze_mode, sph::GazeMode::Fallback);
+  EXPECT_TRUE(rig.sim->surfaceDistanceTracking());
   // Falling back means surface refinement: the surface layer is split.
   EXPECT_GT(rig.sim->particles().countOf(sph::SizeClass::Small), 100u);
 }

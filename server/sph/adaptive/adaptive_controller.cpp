@@ -61,9 +61,6 @@ GazeMode AdaptiveController::gazeMode() const {
 
 void AdaptiveController::apply(Simulation& sim) {
   requireTwoToOneMasses(sim.params());
-  // Every method may need the surface distance field (gaze falls back to surface when the gaze is
-  // lost), so keep it warm: one min per pair in the force loop.
-  sim.setSurfaceDistanceTracking(true);
   const ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   decision_.resize(n);
@@ -72,7 +69,14 @@ void AdaptiveController::apply(Simulation& sim) {
   const GazeMode mode = gazeMode();
   const bool use_gaze = mode == GazeMode::Tracking || mode == GazeMode::Holding;
   const bool use_surface = method_ == Method::Surface || method_ == Method::Hybrid || !use_gaze;
-  if (use_surface) {
+  // The surface distance field advances one hop per step (a min per pair in the force loop, then
+  // decideBySurface). The gaze method needs it only once the gaze is lost: it keeps it moving
+  // while it holds a stale gaze (gaze_hold_s, 1 s by default, far more steps than the field
+  // needs to settle), so the fallback starts from a warm field, and spares the pair loop while
+  // the gaze is tracked. For gaze, decideByGaze then overwrites the surface flags.
+  const bool advance_field = use_surface || mode == GazeMode::Holding;
+  sim.setSurfaceDistanceTracking(advance_field);
+  if (advance_field) {
     decideBySurface(sim, config_, decision_);
   }
   if (use_gaze) {
