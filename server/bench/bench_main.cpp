@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   int frames = 0;
   int threads = 2;
   int export_every = 0;
+  int interleave = 10;
   app.add_option("--scene", scene_arg, "scene name, path to a .json file, comma list, or 'all'")
       ->capture_default_str();
   app.add_option("--method", method_arg,
@@ -53,6 +54,11 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_dir, "output folder (one subfolder per scene/method when several)")
       ->capture_default_str();
   app.add_option("--scene-dir", scene_dir, "folder of named scenes")->capture_default_str();
+  app.add_option("--interleave", interleave,
+                 "frames each method of a scene runs before the next takes its turn, so all see the "
+                 "same machine load (0 = each method start to end, one after another)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--export-every", export_every, "write a particle snapshot every K frames (0 = never)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--export-format", export_format, "snapshot format")
@@ -96,40 +102,65 @@ int main(int argc, char** argv) {
     const bool matrix = runs > 1;
     std::vector<bench::RunSummary> summaries;
     const auto format = export_format == "csv" ? bench::SnapshotFormat::Csv : bench::SnapshotFormat::Vtk;
+    // One scene at a time; its methods take turns of `interleave` frames, so that a slow spell
+    // of the machine falls on all of them alike and their ratios hold.
+    struct Slot {
+      std::string method;
+      std::filesystem::path dir;
+      double total_ms = 0.0;
+      std::chrono::steady_clock::time_point last_print;
+      std::unique_ptr<bench::SceneRun> run;
+    };
     for (const sph::Scene& sc : loaded) {
+      const int total_frames = frames > 0 ? frames : sc.frames;
+      std::vector<std::unique_ptr<Slot>> slots;
       for (const std::string& method : methodsFor(sc)) {
-        const std::filesystem::path dir =
-            matrix ? std::filesystem::path(out_dir) / sc.name / method : std::filesystem::path(out_dir);
-        std::filesystem::create_directories(dir);
+        auto slot = std::make_unique<Slot>();
+        Slot& sl = *slot;
+        sl.method = method;
+        sl.dir = matrix ? std::filesystem::path(out_dir) / sc.name / method : std::filesystem::path(out_dir);
+        std::filesystem::create_directories(sl.dir);
         bench::RunOptions options;
         options.frames = frames;
         options.threads = threads;
         if (bench::methodNeedsGaze(method)) {
           options.gaze = override_gaze ? override_gaze.get() : scene_gaze.at(sc.name).get();
         }
-        const int total_frames = frames > 0 ? frames : sc.frames;
-        auto last_print = std::chrono::steady_clock::now();
-        double total_ms = 0.0;
-        options.on_frame = [&](const sph::Simulation& sim, const bench::FrameRecord& r) {
-          total_ms += r.ms.total_ms;
+        sl.last_print = std::chrono::steady_clock::now();
+        options.on_frame = [&sl, &sc, &export_format, format, export_every, total_frames](
+                               const sph::Simulation& sim, const bench::FrameRecord& r) {
+          sl.total_ms += r.ms.total_ms;
           if (export_every > 0 && r.frame % export_every == 0) {
             char name[64];
             std::snprintf(name, sizeof name, "particles_%05d.%s", r.frame, export_format.c_str());
-            bench::writeSnapshot(sim.particles(), format, (dir / name).string());
+            bench::writeSnapshot(sim.particles(), format, (sl.dir / name).string());
           }
           const auto now = std::chrono::steady_clock::now();
-          if (now - last_print > std::chrono::seconds(1) || r.frame == total_frames) {
-            last_print = now;
+          if (now - sl.last_print > std::chrono::seconds(1) || r.frame == total_frames) {
+            sl.last_print = now;
             std::fprintf(stderr, "[%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n",
-                         sc.name.c_str(), method.c_str(), r.frame, total_frames, r.sim_time,
-                         total_ms / r.frame, r.n_large + r.n_small);
+                         sc.name.c_str(), sl.method.c_str(), r.frame, total_frames, r.sim_time,
+                         sl.total_ms / r.frame, r.n_large + r.n_small);
           }
         };
-        const bench::RunResult run = bench::runScene(sc, method, options);
+        sl.run = std::make_unique<bench::SceneRun>(sc, method, options);
+        slots.push_back(std::move(slot));
+      }
+      const int turn = interleave > 0 ? interleave : total_frames;
+      for (bool left = true; left;) {
+        left = false;
+        for (auto& sl : slots) {
+          for (int k = 0; k < turn && !sl->run->done(); ++k) sl->run->stepFrame();
+          left = left || !sl->run->done();
+        }
+      }
+      for (auto& sl : slots) {
+        const bench::RunResult run = sl->run->result();
+        sl->run.reset();  // free the simulation before the next scene's runs are made
         const bench::Summary summary = bench::summarize(run);
-        bench::writeSummaryJson(run, summary, (dir / "summary.json").string());
-        bench::writeFramesCsv(run, (dir / "frames.csv").string());
-        std::printf("%s\n  -> %s\n", bench::summaryText(run, summary).c_str(), dir.string().c_str());
+        bench::writeSummaryJson(run, summary, (sl->dir / "summary.json").string());
+        bench::writeFramesCsv(run, (sl->dir / "frames.csv").string());
+        std::printf("%s\n  -> %s\n", bench::summaryText(run, summary).c_str(), sl->dir.string().c_str());
         std::fflush(stdout);
         summaries.push_back({run, summary});
       }

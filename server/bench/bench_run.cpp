@@ -60,49 +60,61 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   r.mean_neighbors = sim.grid().meanNeighbors();
 }
 
-RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options) {
+SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const RunOptions& options)
+    : options_(options) {
   requireKnownMethod(method);
   if (options.threads < 1) throw std::invalid_argument("threads must be >= 1");
   omp_set_num_threads(options.threads);
 
   sph::Method m = sph::Method::Regular;
   sph::methodByName(method, m);
-  const bool needs_gaze = sph::usesGaze(m);
-  if (needs_gaze && (options.gaze == nullptr || options.gaze->samples.empty())) {
+  needs_gaze_ = sph::usesGaze(m);
+  if (needs_gaze_ && (options.gaze == nullptr || options.gaze->samples.empty())) {
     throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" +
                                 scene.name + "' names none; pass --gaze FILE)");
   }
-  sph::Simulation sim(scene, sph::startClass(m));
+  sim_ = std::make_unique<sph::Simulation>(scene, sph::startClass(m));
   auto adaptive = sph::makeAdaptiveController(m, scene.adaptive, sph::cameraFromSpec(scene.camera));
-  sph::AdaptiveController* controller = adaptive.get();
-  sim.setAdaptiveStep(std::move(adaptive));
-  RunResult result;
-  result.scene = scene.name;
-  result.method = method;
-  result.preset = scene.params.preset;
-  result.frames = options.frames > 0 ? options.frames : scene.frames;
-  result.threads = options.threads;
-  result.mass_start = sim.particles().totalMass();
-  result.records.reserve(result.frames);
-  for (int f = 0; f < result.frames; ++f) {
-    if (controller && needs_gaze) controller->setGaze(gazeInputAt(*options.gaze, sim.time()));
-    sim.step();
-    FrameRecord r;
-    if (controller) {
-      r.splits = controller->lastStats().splits;
-      r.merges = controller->lastStats().merges;
-      r.gaze_mode = controller->lastStats().gaze_mode;
-    }
-    r.frame = f + 1;
-    r.sim_time = sim.time();
-    r.ms = sim.lastTimings();
-    measureState(sim, r);
-    result.records.push_back(r);
-    if (options.on_frame) options.on_frame(sim, result.records.back());
+  controller_ = adaptive.get();
+  sim_->setAdaptiveStep(std::move(adaptive));
+  result_.scene = scene.name;
+  result_.method = method;
+  result_.preset = scene.params.preset;
+  result_.frames = options.frames > 0 ? options.frames : scene.frames;
+  result_.threads = options.threads;
+  result_.mass_start = sim_->particles().totalMass();
+  result_.records.reserve(result_.frames);
+}
+
+void SceneRun::stepFrame() {
+  omp_set_num_threads(options_.threads);
+  if (controller_ && needs_gaze_) controller_->setGaze(gazeInputAt(*options_.gaze, sim_->time()));
+  sim_->step();
+  FrameRecord r;
+  if (controller_) {
+    r.splits = controller_->lastStats().splits;
+    r.merges = controller_->lastStats().merges;
+    r.gaze_mode = controller_->lastStats().gaze_mode;
   }
-  result.mass_end = sim.particles().totalMass();
-  result.neighbor_stride = sim.grid().stride();
-  return result;
+  r.frame = static_cast<int>(result_.records.size()) + 1;
+  r.sim_time = sim_->time();
+  r.ms = sim_->lastTimings();
+  measureState(*sim_, r);
+  result_.records.push_back(r);
+  if (options_.on_frame) options_.on_frame(*sim_, result_.records.back());
+}
+
+RunResult SceneRun::result() const {
+  RunResult out = result_;
+  out.mass_end = sim_->particles().totalMass();
+  out.neighbor_stride = sim_->grid().stride();
+  return out;
+}
+
+RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options) {
+  SceneRun run(scene, method, options);
+  while (!run.done()) run.stepFrame();
+  return run.result();
 }
 
 }  // namespace bench

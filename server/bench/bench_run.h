@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,28 @@ void requireKnownMethod(const std::string& method);
 // True for a known method that needs a gaze recording (sph::usesGaze).
 bool methodNeedsGaze(const std::string& method);
 
-// The scene's method settings (scene.adaptive) apply; gaze and hybrid need options.gaze.
+// One run in progress, advanced a frame at a time, so that several runs can take turns in one
+// process (sph_bench --interleave) and see the same machine load. The scene's method settings
+// (scene.adaptive) apply; gaze and hybrid need options.gaze (the constructor throws without one).
+class SceneRun {
+ public:
+  SceneRun(const sph::Scene& scene, const std::string& method, const RunOptions& options);
+  bool done() const { return static_cast<int>(result_.records.size()) >= result_.frames; }
+  // Steps one frame, records it and calls options.on_frame. Sets OpenMP's thread count first
+  // (another run may have changed it).
+  void stepFrame();
+  // The result so far, with the end-of-run fields (mass at the end, neighbour stride) filled in.
+  RunResult result() const;
+
+ private:
+  RunOptions options_;
+  bool needs_gaze_ = false;
+  std::unique_ptr<sph::Simulation> sim_;
+  sph::AdaptiveController* controller_ = nullptr;
+  RunResult result_;
+};
+
+// A whole run, start to end.
 RunResult runScene(const sph::Scene& scene, const std::string& method, const RunOptions& options);
 
 // Health of the particle set at the current instant (used per frame and by tests).

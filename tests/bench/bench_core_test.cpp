@@ -65,6 +65,36 @@ TEST(BenchRun, GazeMethodWithoutARecordingIsAClearError) {
   }
 }
 
+// Runs taking turns in one process (sph_bench --interleave) compute what they compute alone.
+TEST(BenchRun, InterleavedRunsMatchRunsAlone) {
+  sph::Scene s;
+  s.name = "tiny";
+  s.boundary.box.max = Eigen::Vector3d(0.5, 0.5, 0.5);
+  s.water.max = Eigen::Vector3d(0.25, 0.25, 0.25);
+  s.large_particles = 300;
+  const gaze::GazeRecording rec = threeSamples();
+  bench::RunOptions options;
+  options.frames = 12;
+  options.gaze = &rec;
+  const bench::RunResult regular_alone = bench::runScene(s, "regular", options);
+  const bench::RunResult gaze_alone = bench::runScene(s, "gaze", options);
+
+  bench::SceneRun regular(s, "regular", options);
+  bench::SceneRun gaze_run(s, "gaze", options);
+  while (!regular.done() || !gaze_run.done()) {
+    for (int k = 0; k < 5 && !regular.done(); ++k) regular.stepFrame();
+    for (int k = 0; k < 5 && !gaze_run.done(); ++k) gaze_run.stepFrame();
+  }
+  for (const auto& [alone, turns] : {std::pair{regular_alone, regular.result()}, std::pair{gaze_alone, gaze_run.result()}}) {
+    ASSERT_EQ(turns.records.size(), 12u) << alone.method;
+    EXPECT_EQ(turns.mass_end, alone.mass_end) << alone.method;
+    for (std::size_t f = 0; f < alone.records.size(); ++f) {
+      EXPECT_EQ(turns.records[f].n_small, alone.records[f].n_small) << alone.method << " frame " << f;
+      EXPECT_EQ(turns.records[f].mean_density_ratio, alone.records[f].mean_density_ratio) << alone.method << " frame " << f;
+    }
+  }
+}
+
 TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   bench::RunSummary regular, gaze_run;
   regular.run.scene = gaze_run.run.scene = "dambreak";
