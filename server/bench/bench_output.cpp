@@ -86,16 +86,16 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
   std::ofstream out = openOut(path);
   out << "frame,sim_time,n_large,n_small,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
-         "splits,merges,gaze_mode\n";
+         "splits,merges,gaze_mode,merge_unpaired\n";
   char line[512];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
     std::snprintf(line, sizeof line,
-                  "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s\n", r.frame,
+                  "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d\n", r.frame,
                   r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
                   r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s,
                   r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
-                  sph::gazeModeName(r.gaze_mode));
+                  sph::gazeModeName(r.gaze_mode), r.merge_unpaired);
     out << line;
   }
 }

@@ -94,6 +94,7 @@ void SceneRun::stepFrame() {
   if (controller_) {
     r.splits = controller_->lastStats().splits;
     r.merges = controller_->lastStats().merges;
+    r.merge_unpaired = controller_->lastStats().merge_wanted - 2 * r.merges;
     r.gaze_mode = controller_->lastStats().gaze_mode;
   }
   r.frame = static_cast<int>(result_.records.size()) + 1;

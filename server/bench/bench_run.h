@@ -27,6 +27,7 @@ struct FrameRecord {
   std::size_t outside_box = 0;
   int splits = 0;  // adaptive step of this frame
   int merges = 0;
+  int merge_unpaired = 0;  // SMALL particles flagged MERGE that found no partner
   sph::GazeMode gaze_mode = sph::GazeMode::None;
 };
 

@@ -40,6 +40,9 @@ class Projector {
  public:
   explicit Projector(const ScreenCamera& camera);
   ScreenDisc project(const Eigen::Vector3d& center, double radius) const;
+  // The same projection in single precision, for the gaze decision over every particle each step
+  // (a third of the cost of the double form there); agrees with project() to about 1e-6 of the width.
+  ScreenDisc projectFast(const Eigen::Vector3f& center, float radius) const;
   double aspect() const { return aspect_; }  // width / height
 
  private:
@@ -47,6 +50,9 @@ class Projector {
   Eigen::Vector4d view_depth_row_;  // row 2 of the view matrix: view-space z
   double focal_over_width_ = 1.0;   // projection(1,1) * height / 2 / width
   double aspect_ = 1.0;
+  // Rows x, y, w of view-projection and the depth row, in float.
+  Eigen::Vector4f row_x_, row_y_, row_w_, depth_row_;
+  float focal_over_width_f_ = 1.0f;
 };
 
 }  // namespace sph

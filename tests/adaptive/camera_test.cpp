@@ -54,6 +54,21 @@ TEST(Camera, ProjectedRadiusIsAFractionOfTheWidth) {
 TEST(Camera, PointsBehindTheEyeAreNotInFront) {
   const sph::Projector proj(testCamera());
   EXPECT_FALSE(proj.project(Eigen::Vector3d(0.0, 0.0, 6.0), 0.1).in_front);
+  EXPECT_FALSE(proj.projectFast(Eigen::Vector3f(0.0f, 0.0f, 6.0f), 0.1f).in_front);
+}
+
+TEST(Camera, SinglePrecisionProjectionAgreesWithDouble) {
+  const sph::Projector proj(testCamera());
+  for (int k = 0; k < 200; ++k) {
+    // A spiral of points through the view volume, near and far.
+    const Eigen::Vector3f p(1.5f * std::sin(0.7f * k), 1.0f * std::cos(0.9f * k), 3.0f - 0.04f * k);
+    const sph::ScreenDisc d = proj.project(p.cast<double>(), 0.03);
+    const sph::ScreenDisc f = proj.projectFast(p, 0.03f);
+    ASSERT_EQ(f.in_front, d.in_front) << "point " << k;
+    EXPECT_NEAR(f.x, d.x, 1e-5) << "point " << k;
+    EXPECT_NEAR(f.y, d.y, 1e-5) << "point " << k;
+    EXPECT_NEAR(f.radius, d.radius, 1e-6 + 1e-5 * d.radius) << "point " << k;
+  }
 }
 
 TEST(Camera, UnusableCamerasAreRecognised) {

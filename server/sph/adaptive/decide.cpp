@@ -96,8 +96,7 @@ void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, doub
   const std::size_t n = particles.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const ScreenDisc disc =
-        projector.project(particles.position[i].cast<double>(), particles.radius[i]);
+    const ScreenDisc disc = projector.projectFast(particles.position[i], particles.radius[i]);
     std::int8_t gaze = kMerge;
     if (disc.in_front) {
       // Distances in units of the viewport width (y is a fraction of the height).
