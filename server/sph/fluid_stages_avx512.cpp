@@ -81,6 +81,15 @@ inline __m512 inverseLength(__m512 r2) {
   return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(r2, _mm512_setzero_ps(), _CMP_GT_OQ), refined);
 }
 
+// The attribute whose value tells the two size classes apart: the mass when their masses differ
+// (the pair loops gather it anyway, so spotting a mixed pair costs no extra gather), else the
+// support radius. Every particle of a class carries the class's mass and support.
+const float* classKey(const SimParams& params, const ParticleSet& p) {
+  const auto classes = params.classes();
+  const bool masses_differ = static_cast<float>(classes[0].mass) != static_cast<float>(classes[1].mass);
+  return masses_differ ? p.mass.data() : p.support.data();
+}
+
 }  // namespace
 
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
@@ -89,8 +98,9 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
   const float k = static_cast<float>(params.gas_stiffness);
   const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
   const float* pos = p.position.data()->data();
-  const float* support = p.support.data();
   const float* mass = p.mass.data();
+  const float* key = classKey(params, p);
+  const bool key_is_mass = key == mass;
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -100,7 +110,7 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
     const __m512 xi = _mm512_set1_ps(pos[3 * i]);
     const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
     const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
-    const __m512 hi = _mm512_set1_ps(support[i]);
+    const __m512 key_i = _mm512_set1_ps(key[i]);
     const auto list = grid.neighbors(i);
     const auto count = static_cast<std::uint32_t>(list.size());
     __m512 sum = _mm512_setzero_ps();
@@ -113,9 +123,11 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
       const __m512 dz = zi - gather(live, j3, pos + 2);
       const __m512 r2 = dx * dx + dy * dy + dz * dz;
       __m512 w = poly6(own, r2);
-      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, gather(live, j, support), hi, _CMP_NEQ_OQ);
+      const __m512 mj = gather(live, j, mass);  // dead lanes: mass 0, so they add nothing
+      const __m512 key_j = key_is_mass ? mj : gather(live, j, key);
+      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, key_j, key_i, _CMP_NEQ_OQ);
       if (mixed) w = average(mixed, w, poly6(other, r2));
-      sum = _mm512_fmadd_ps(gather(live, j, mass), w, sum);  // eq. (3.11); dead lanes have mass 0
+      sum = _mm512_fmadd_ps(mj, w, sum);  // eq. (3.11)
     }
     const float rho = p.mass[i] * sph::poly6(kernels[ci], 0.0f) + _mm512_reduce_add_ps(sum);
     const float pressure = k * (rho - rho0);  // eq. (3.12)
@@ -136,8 +148,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
   const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
   const float* pos = p.position.data()->data();
   const float* vel = p.velocity.data()->data();
-  const float* support = p.support.data();
   const float* mass = p.mass.data();
+  const float* key = classKey(params, p);
+  const bool key_is_mass = key == mass;
   const float* volume = p.volume.data();
   const float* pressure_term = p.pressure_term.data();
   const float* surface_distance = p.surface_distance.data();
@@ -154,7 +167,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     const __m512 uxi = _mm512_set1_ps(vel[3 * i]);
     const __m512 uyi = _mm512_set1_ps(vel[3 * i + 1]);
     const __m512 uzi = _mm512_set1_ps(vel[3 * i + 2]);
-    const __m512 hi = _mm512_set1_ps(support[i]);
+    const __m512 key_i = _mm512_set1_ps(key[i]);
     const __m512 pti = _mm512_set1_ps(pressure_term[i]);
 
     const __m512 zero = _mm512_setzero_ps();
@@ -184,15 +197,16 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       const __m512 inv_r = inverseLength(r2);
       const __m512 rl = r2 * inv_r;
       PairKernels kern = forceKernels(own, r2, rl, inv_r);
-      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, gather(live, j, support), hi, _CMP_NEQ_OQ);
+      // Dead lanes gather mass and volume 0, so every term below is 0 there.
+      const __m512 mj = gather(live, j, mass);
+      const __m512 volj = gather(live, j, volume);
+      const __m512 key_j = key_is_mass ? mj : gather(live, j, key);
+      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, key_j, key_i, _CMP_NEQ_OQ);
       if (mixed) {
         const PairKernels o = forceKernels(other, r2, rl, inv_r);
         kern = {average(mixed, kern.spiky, o.spiky), average(mixed, kern.visc, o.visc),
                 average(mixed, kern.cgrad, o.cgrad), average(mixed, kern.clap, o.clap)};
       }
-      // Dead lanes gather mass and volume 0, so every term below is 0 there.
-      const __m512 mj = gather(live, j, mass);
-      const __m512 volj = gather(live, j, volume);
       // Pressure, eq. (3.13) divided by rho_i.
       const __m512 s = mj * (pti + gather(live, j, pressure_term)) * kern.spiky;
       pax = _mm512_fmadd_ps(s, dx, pax);
