@@ -49,7 +49,7 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
   const float rho0 = static_cast<float>(params.rest_density);
   const float k = static_cast<float>(params.gas_stiffness);
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     const KernelConstants& ki = kernels[classIndex(p.size_class[i])];
     const Vec3 xi = p.position[i];
@@ -79,7 +79,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
   const Vec3 gravity(0.0f, static_cast<float>(params.gravity), 0.0f);
   const std::size_t n = p.size();
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     const SizeClass ci = p.size_class[i];
     const KernelConstants& ki = kernels[classIndex(ci)];

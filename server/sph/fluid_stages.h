@@ -15,6 +15,12 @@ namespace sph {
 
 using KernelTable = std::array<KernelConstants, kSizeClassCount>;
 
+// Particles per chunk of the pair loops, which threads take as they come free: the cost of a
+// particle varies with its class and neighbour count, and adaptive runs keep the costly SMALL
+// particles together at the end of the arrays. Each particle's sums are its own, so the result
+// does not depend on which thread takes which chunk.
+inline constexpr int kPairLoopChunk = 256;
+
 KernelTable makeKernelTable(const SimParams& params);
 
 // Density, eq. (3.11), and pressure, eq. (3.12).

@@ -102,7 +102,7 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
   const float* key = classKey(params, p);
   const bool key_is_mass = key == mass;
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     const int ci = classIndex(p.size_class[i]);
     const LaneKernel& own = lanes[ci];
@@ -156,7 +156,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
   const float* surface_distance = p.surface_distance.data();
   const std::size_t n = p.size();
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     const int ci = classIndex(p.size_class[i]);
     const LaneKernel& own = lanes[ci];

@@ -5,7 +5,6 @@
 #include <immintrin.h>
 #endif
 #include <cmath>
-#include <omp.h>
 #include <stdexcept>
 #include <string>
 
@@ -87,13 +86,15 @@ void NeighborGrid::build(const ParticleSet& particles) {
   for (;;) {
     if (neighbor_index_.size() < n * stride_) neighbor_index_.resize(n * stride_);
     std::uint32_t max_count = 0;
-#pragma omp parallel reduction(max : max_count)
-    {
-      // Contiguous ranges, one per thread, as schedule(static) would give.
-      const auto threads = static_cast<std::size_t>(omp_get_num_threads());
-      const auto t = static_cast<std::size_t>(omp_get_thread_num());
-      const std::size_t begin = n * t / threads;
-      const std::size_t end = n * (t + 1) / threads;
+    // Blocks of particles taken by whichever thread is free: the cost per particle varies with its
+    // class and neighbour count, and adaptive runs keep the SMALL ones (the costly ones) together
+    // at the end of the arrays, so fixed halves left one thread waiting for the other.
+    const std::size_t blocks = (n + kBlockSize - 1) / kBlockSize;
+#pragma omp parallel for schedule(dynamic, 1) reduction(max : max_count)
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const std::size_t begin = b * kBlockSize;
+      const std::size_t end = std::min(n, begin + kBlockSize);
+      // The block packs its lists from the start of its particles' slots.
       std::size_t cursor = begin * stride_;
       const std::size_t region_end = end * stride_;
       for (std::size_t i = begin; i < end; ++i) {

@@ -43,7 +43,8 @@ Vec3 splitDirection(std::uint32_t id) { return hashedUnitVector(id); }
 void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
                     std::span<const std::int8_t> decision, std::span<std::int32_t> partner) {
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
+  // Only SMALL particles flagged MERGE search, and they sit together: chunks even out the threads.
+#pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     std::int32_t best = -1;
     if (decision[i] == kMerge && p.size_class[i] == SizeClass::Small) {
