@@ -5,6 +5,7 @@
 
 #include "sph/coincident_pairs.h"
 #include "sph/collision.h"
+#include "sph/fluid_stage_ends.h"
 #include "sph/fluid_stages_avx512.h"
 
 namespace sph {
@@ -62,21 +63,13 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
       }
       rho += p.mass[j] * w;  // eq. (3.11)
     }
-    const float pressure = k * (rho - rho0);  // eq. (3.12)
-    p.density[i] = rho;
-    p.pressure[i] = pressure;
-    p.pressure_term[i] = pressure / (rho * rho);
-    p.volume[i] = p.mass[i] / rho;
+    storeDensity(p, i, rho, k, rho0);
   }
 }
 
 void computeAccelerations(const SimParams& params, const KernelTable& kernels,
                           const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
-  const float mu = static_cast<float>(params.viscosity);
-  const float sigma = static_cast<float>(params.surface_tension);
-  const float threshold = static_cast<float>(params.surfaceThreshold());
-  const bool tension = params.surface_tension_enabled && sigma > 0.0f;
-  const Vec3 gravity(0.0f, static_cast<float>(params.gravity), 0.0f);
+  const ForceConstants constants(params);
   const std::size_t n = p.size();
 
 #pragma omp parallel for schedule(dynamic, kPairLoopChunk)
@@ -85,7 +78,6 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     const KernelConstants& ki = kernels[classIndex(ci)];
     const Vec3 xi = p.position[i];
     const Vec3 ui = p.velocity[i];
-    const float rhoi = p.density[i];
     const float pi_over_rho2 = p.pressure_term[i];
 
     Vec3 pressure_acc = Vec3::Zero();   // f_pressure / rho_i
@@ -127,14 +119,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       if (propagate_surface_distance) surface_hop = std::min(surface_hop, p.surface_distance[j] + rl);
     }
 
-    Vec3 acc = pressure_acc + (mu / rhoi) * viscous + gravity;  // gravity: f = rho g, eq. (3.15)
-    const float normal_len = normal.norm();
-    if (tension && normal_len >= threshold) {
-      // Surface tension, eq. (3.19): f = -sigma lap(c) n / |n|, applied where |n| >= l (3.36).
-      acc += (-sigma * colour_laplacian / (normal_len * rhoi)) * normal;
-    }
-    p.acceleration[i] = acc;
-    p.normal_length[i] = normal_len;
+    storeAcceleration(p, i, {pressure_acc, viscous, normal, colour_laplacian}, constants);
     if (propagate_surface_distance) p.surface_hop[i] = surface_hop;
   }
 }

@@ -9,8 +9,10 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "sph/coincident_pairs.h"
+#include "sph/fluid_stage_ends.h"
 
 namespace sph::avx512 {
 
@@ -81,6 +83,29 @@ inline __m512 inverseLength(__m512 r2) {
   return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(r2, _mm512_setzero_ps(), _CMP_GT_OQ), refined);
 }
 
+// A particle's position in all 16 lanes.
+struct LaneCentre {
+  __m512 x, y, z;
+  LaneCentre(const float* pos, std::size_t i)
+      : x(_mm512_set1_ps(pos[3 * i])), y(_mm512_set1_ps(pos[3 * i + 1])), z(_mm512_set1_ps(pos[3 * i + 2])) {}
+};
+
+// Neighbours b..b+15 of a list: which lanes are live, their indices, r = x_i - x_j and |r|^2.
+struct PairBatch {
+  __mmask16 live;
+  __m512i j, j3;
+  __m512 dx, dy, dz, r2;
+
+  PairBatch(std::span<const std::uint32_t> list, std::uint32_t b, const LaneCentre& c, const float* pos)
+      : live(liveLanes(static_cast<std::uint32_t>(list.size()) - b)),
+        j(_mm512_maskz_loadu_epi32(live, list.data() + b)),
+        j3(tripleIndex(j)),
+        dx(c.x - gather(live, j3, pos)),
+        dy(c.y - gather(live, j3, pos + 1)),
+        dz(c.z - gather(live, j3, pos + 2)),
+        r2(dx * dx + dy * dy + dz * dz) {}
+};
+
 // The attribute whose value tells the two size classes apart: the mass when their masses differ
 // (the pair loops gather it anyway, so spotting a mixed pair costs no extra gather), else the
 // support radius. Every particle of a class carries the class's mass and support.
@@ -107,44 +132,26 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
     const int ci = classIndex(p.size_class[i]);
     const LaneKernel& own = lanes[ci];
     const LaneKernel& other = lanes[1 - ci];
-    const __m512 xi = _mm512_set1_ps(pos[3 * i]);
-    const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
-    const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
+    const LaneCentre centre(pos, i);
     const __m512 key_i = _mm512_set1_ps(key[i]);
     const auto list = grid.neighbors(i);
-    const auto count = static_cast<std::uint32_t>(list.size());
     __m512 sum = _mm512_setzero_ps();
-    for (std::uint32_t b = 0; b < count; b += 16) {
-      const __mmask16 live = liveLanes(count - b);
-      const __m512i j = _mm512_maskz_loadu_epi32(live, list.data() + b);
-      const __m512i j3 = tripleIndex(j);
-      const __m512 dx = xi - gather(live, j3, pos);
-      const __m512 dy = yi - gather(live, j3, pos + 1);
-      const __m512 dz = zi - gather(live, j3, pos + 2);
-      const __m512 r2 = dx * dx + dy * dy + dz * dz;
-      __m512 w = poly6(own, r2);
-      const __m512 mj = gather(live, j, mass);  // dead lanes: mass 0, so they add nothing
-      const __m512 key_j = key_is_mass ? mj : gather(live, j, key);
-      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, key_j, key_i, _CMP_NEQ_OQ);
-      if (mixed) w = average(mixed, w, poly6(other, r2));
+    for (std::uint32_t b = 0; b < list.size(); b += 16) {
+      const PairBatch pair(list, b, centre, pos);
+      __m512 w = poly6(own, pair.r2);
+      const __m512 mj = gather(pair.live, pair.j, mass);  // dead lanes: mass 0, so they add nothing
+      const __m512 key_j = key_is_mass ? mj : gather(pair.live, pair.j, key);
+      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(pair.live, key_j, key_i, _CMP_NEQ_OQ);
+      if (mixed) w = average(mixed, w, poly6(other, pair.r2));
       sum = _mm512_fmadd_ps(mj, w, sum);  // eq. (3.11)
     }
-    const float rho = p.mass[i] * sph::poly6(kernels[ci], 0.0f) + _mm512_reduce_add_ps(sum);
-    const float pressure = k * (rho - rho0);  // eq. (3.12)
-    p.density[i] = rho;
-    p.pressure[i] = pressure;
-    p.pressure_term[i] = pressure / (rho * rho);
-    p.volume[i] = p.mass[i] / rho;
+    storeDensity(p, i, p.mass[i] * sph::poly6(kernels[ci], 0.0f) + _mm512_reduce_add_ps(sum), k, rho0);
   }
 }
 
 void computeAccelerations(const SimParams& params, const KernelTable& kernels,
                           const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
-  const float mu = static_cast<float>(params.viscosity);
-  const float sigma = static_cast<float>(params.surface_tension);
-  const float threshold = static_cast<float>(params.surfaceThreshold());
-  const bool tension = params.surface_tension_enabled && sigma > 0.0f;
-  const Vec3 gravity(0.0f, static_cast<float>(params.gravity), 0.0f);
+  const ForceConstants constants(params);
   const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
   const float* pos = p.position.data()->data();
   const float* vel = p.velocity.data()->data();
@@ -161,9 +168,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     const int ci = classIndex(p.size_class[i]);
     const LaneKernel& own = lanes[ci];
     const LaneKernel& other = lanes[1 - ci];
-    const __m512 xi = _mm512_set1_ps(pos[3 * i]);
-    const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
-    const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
+    const LaneCentre centre(pos, i);
     const __m512 uxi = _mm512_set1_ps(vel[3 * i]);
     const __m512 uyi = _mm512_set1_ps(vel[3 * i + 1]);
     const __m512 uzi = _mm512_set1_ps(vel[3 * i + 2]);
@@ -179,15 +184,11 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     Vec3 contact_acc = Vec3::Zero();            // from neighbours on the same point
 
     const auto list = grid.neighbors(i);
-    const auto count = static_cast<std::uint32_t>(list.size());
-    for (std::uint32_t b = 0; b < count; b += 16) {
-      const __mmask16 live = liveLanes(count - b);
-      const __m512i j = _mm512_maskz_loadu_epi32(live, list.data() + b);
-      const __m512i j3 = tripleIndex(j);
-      const __m512 dx = xi - gather(live, j3, pos);
-      const __m512 dy = yi - gather(live, j3, pos + 1);
-      const __m512 dz = zi - gather(live, j3, pos + 2);
-      const __m512 r2 = dx * dx + dy * dy + dz * dz;
+    for (std::uint32_t b = 0; b < list.size(); b += 16) {
+      const PairBatch pair(list, b, centre, pos);
+      const __mmask16 live = pair.live;
+      const __m512i j = pair.j;
+      const __m512 dx = pair.dx, dy = pair.dy, dz = pair.dz, r2 = pair.r2;
       const __mmask16 coincident = _mm512_mask_cmp_ps_mask(live, r2, _mm512_setzero_ps(), _CMP_EQ_OQ);
       if (coincident) {  // rare: pairs on one point (see coincident_pairs.h); their lanes add 0 below
         for (std::uint32_t bits = coincident; bits != 0; bits &= bits - 1) {
@@ -214,9 +215,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       paz = _mm512_fmadd_ps(s, dz, paz);
       // Viscosity, eq. (3.14).
       const __m512 sv = volj * kern.visc;
-      vx = _mm512_fmadd_ps(sv, gather(live, j3, vel) - uxi, vx);
-      vy = _mm512_fmadd_ps(sv, gather(live, j3, vel + 1) - uyi, vy);
-      vz = _mm512_fmadd_ps(sv, gather(live, j3, vel + 2) - uzi, vz);
+      vx = _mm512_fmadd_ps(sv, gather(live, pair.j3, vel) - uxi, vx);
+      vy = _mm512_fmadd_ps(sv, gather(live, pair.j3, vel + 1) - uyi, vy);
+      vz = _mm512_fmadd_ps(sv, gather(live, pair.j3, vel + 2) - uzi, vz);
       // Colour field gradient and Laplacian, eqs. (3.16)-(3.18).
       const __m512 sc = volj * kern.cgrad;
       nx = _mm512_fmadd_ps(sc, dx, nx);
@@ -228,22 +229,14 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       }
     }
 
-    const float rhoi = p.density[i];
-    const Vec3 pressure_acc =
+    ForceSums sums;
+    sums.pressure_acc =
         contact_acc - Vec3(_mm512_reduce_add_ps(pax), _mm512_reduce_add_ps(pay), _mm512_reduce_add_ps(paz));
-    const Vec3 viscous(_mm512_reduce_add_ps(vx), _mm512_reduce_add_ps(vy), _mm512_reduce_add_ps(vz));
-    const Vec3 normal(_mm512_reduce_add_ps(nx), _mm512_reduce_add_ps(ny), _mm512_reduce_add_ps(nz));
+    sums.viscous = Vec3(_mm512_reduce_add_ps(vx), _mm512_reduce_add_ps(vy), _mm512_reduce_add_ps(vz));
+    sums.normal = Vec3(_mm512_reduce_add_ps(nx), _mm512_reduce_add_ps(ny), _mm512_reduce_add_ps(nz));
     // The colour field sums over every j including i (3.16); only the Laplacian has a self term.
-    const float colour_laplacian = p.volume[i] * sph::poly6Laplacian(kernels[ci], 0.0f) + _mm512_reduce_add_ps(lap);
-
-    Vec3 acc = pressure_acc + (mu / rhoi) * viscous + gravity;  // gravity: f = rho g, eq. (3.15)
-    const float normal_len = normal.norm();
-    if (tension && normal_len >= threshold) {
-      // Surface tension, eq. (3.19): f = -sigma lap(c) n / |n|, applied where |n| >= l (3.36).
-      acc += (-sigma * colour_laplacian / (normal_len * rhoi)) * normal;
-    }
-    p.acceleration[i] = acc;
-    p.normal_length[i] = normal_len;
+    sums.colour_laplacian = p.volume[i] * sph::poly6Laplacian(kernels[ci], 0.0f) + _mm512_reduce_add_ps(lap);
+    storeAcceleration(p, i, sums, constants);
     if (propagate_surface_distance) p.surface_hop[i] = _mm512_reduce_min_ps(hop);
   }
 }
