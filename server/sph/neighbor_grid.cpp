@@ -166,10 +166,10 @@ std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, co
     const __mmask16 accept = _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) &
                              _mm512_cmpneq_epi32_mask(j, self_v);
     const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accept));
-    // Compress in a register and store all 16 lanes while the thread's range has room for them
+    // Compress in a register and store all 16 lanes while the block's range has room for them
     // (a compress-store straight to memory is several times slower on current cores; the lanes
     // past the list land where the next list will be written); near the end of the range store
-    // only the accepted lanes, so no write reaches another thread's range.
+    // only the accepted lanes, so no write reaches another block's range.
     if (count + 16 <= room) {
       _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
     } else if (count + accepted <= capacity) {

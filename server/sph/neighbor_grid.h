@@ -1,7 +1,8 @@
 // Neighbour search on a uniform grid: a counting sort bins particles into cells (deterministic,
 // serial), then a parallel pass writes each particle's neighbours into one flat array, the lists
-// packed back to back within blocks of 256 particles. Neighbours follow the adaptive criterion |ri - rj| <= (hi + hj) / 2, eq. (3.34), so mixed
-// SMALL and LARGE particles need no second code path.
+// packed back to back within blocks of 256 particles. Neighbours follow the adaptive criterion
+// |ri - rj| <= (hi + hj) / 2, eq. (3.34), so mixed SMALL and LARGE particles need no second code
+// path.
 #pragma once
 
 #include <cstddef>
@@ -46,8 +47,8 @@ class NeighborGrid {
 
  private:
   std::uint32_t cellOf(const Vec3& p) const;
-  // Writes the neighbours of particle i to out[0...]; `room` slots from `out` belong to the calling
-  // thread (at least the stride). Returns the true count (may exceed the stride).
+  // Writes the neighbours of particle i to out[0...]; `room` slots from `out` belong to the
+  // particle's block (at least the stride). Returns the true count (may exceed the stride).
   std::uint32_t gatherNeighbors(const ParticleSet& particles, std::size_t i, std::uint32_t* out,
                                 std::size_t room) const;
   // Appends the accepted candidates k in [begin, end) of the sorted list to out[count...]; returns
