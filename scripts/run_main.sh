@@ -35,6 +35,7 @@ done
 bash scripts/install_deps.sh
 bash scripts/build.sh
 mkdir -p "$out_dir"
+out_dir="$(cd "$out_dir" && pwd)"  # absolute, for the messages below
 bin=build/bin
 
 pids=()
@@ -68,7 +69,7 @@ else
   xvfb-run -a -s "-screen 0 1280x720x24" \
     "$bin/sph_viewer" --snapshot "$out_dir/viewer.png" --frames "$frames" --timeout $((seconds * 4 + 60)) --report \
     >"$out_dir/viewer.log" 2>&1 || { echo "run_main: the viewer failed; see $out_dir/viewer.log" >&2; tail -n 20 "$out_dir/viewer.log" >&2; exit 1; }
-  echo "run_main: picture of the last frame: $(pwd)/$out_dir/viewer.png"
+  echo "run_main: picture of the last frame: $out_dir/viewer.png"
 fi
 cleanup
 pids=()
