@@ -76,7 +76,8 @@ inline __m512 gather(__mmask16 live, __m512i idx, const float* base) {
 inline __m512i tripleIndex(__m512i idx) { return _mm512_add_epi32(idx, _mm512_add_epi32(idx, idx)); }
 
 // 1 / |r| from r^2: the 14-bit estimate and one Newton step (about 1 ulp), 0 where r = 0 (the
-// direction is undefined there and the pair exerts no force, as in spikyGradFactor).
+// direction is undefined there, as in spikyGradFactor; such pairs get their pressure from
+// coincidentPressureAcceleration instead).
 inline __m512 inverseLength(__m512 r2) {
   const __m512 y = _mm512_rsqrt14_ps(r2);
   const __m512 refined = y * (_mm512_set1_ps(1.5f) - _mm512_set1_ps(0.5f) * r2 * y * y);
@@ -190,7 +191,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       const __m512i j = pair.j;
       const __m512 dx = pair.dx, dy = pair.dy, dz = pair.dz, r2 = pair.r2;
       const __mmask16 coincident = _mm512_mask_cmp_ps_mask(live, r2, _mm512_setzero_ps(), _CMP_EQ_OQ);
-      if (coincident) {  // rare: pairs on one point (see coincident_pairs.h); their lanes add 0 below
+      if (coincident) {  // rare: pairs on one point (coincident_pairs.h); 1/|r| = 0 zeroes their pressure lanes below
         for (std::uint32_t bits = coincident; bits != 0; bits &= bits - 1) {
           contact_acc += coincidentPressureAcceleration(p, kernels, i, list[b + static_cast<std::uint32_t>(__builtin_ctz(bits))]);
         }
