@@ -37,7 +37,7 @@ struct RunResult {
   std::string preset;
   int frames = 0;
   int threads = 0;
-  std::size_t neighbor_stride = 0;  // slots per particle in the flat neighbour list at the end
+  std::size_t neighbor_stride = 0;  // most entries one neighbour list may hold, at the end
   double mass_start = 0.0;
   double mass_end = 0.0;
   std::vector<FrameRecord> records;

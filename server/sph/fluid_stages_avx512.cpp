@@ -107,14 +107,35 @@ struct PairBatch {
         r2(dx * dx + dy * dy + dz * dz) {}
 };
 
-// The attribute whose value tells the two size classes apart: the mass when their masses differ
-// (the pair loops gather it anyway, so spotting a mixed pair costs no extra gather), else the
-// support radius. Every particle of a class carries the class's mass and support.
-const float* classKey(const SimParams& params, const ParticleSet& p) {
-  const auto classes = params.classes();
-  const bool masses_differ = static_cast<float>(classes[0].mass) != static_cast<float>(classes[1].mass);
-  return masses_differ ? p.mass.data() : p.support.data();
-}
+// What both pair loops need to tell the size classes apart and evaluate their kernels.
+class SizeClassLanes {
+ public:
+  SizeClassLanes(const SimParams& params, const KernelTable& kernels, const ParticleSet& p)
+      : lanes_{LaneKernel(kernels[0]), LaneKernel(kernels[1])}, mass_(p.mass.data()) {
+    // The attribute whose value tells the classes apart: the mass when their masses differ (the
+    // loops gather it anyway, so spotting a mixed pair costs no extra gather), else the support
+    // radius. Every particle of a class carries the class's mass and support.
+    const auto classes = params.classes();
+    const bool masses_differ = static_cast<float>(classes[0].mass) != static_cast<float>(classes[1].mass);
+    key_ = masses_differ ? p.mass.data() : p.support.data();
+  }
+
+  // The kernels of particle i's class and of the other class, and i's key in every lane.
+  const LaneKernel& own(int class_index) const { return lanes_[class_index]; }
+  const LaneKernel& other(int class_index) const { return lanes_[1 - class_index]; }
+  __m512 keyOf(std::size_t i) const { return _mm512_set1_ps(key_[i]); }
+
+  // Lanes whose neighbour is of the other class than i; `mj` is the neighbours' gathered mass.
+  __mmask16 mixed(const PairBatch& pair, __m512 mj, __m512 key_i) const {
+    const __m512 key_j = key_ == mass_ ? mj : gather(pair.live, pair.j, key_);
+    return _mm512_mask_cmp_ps_mask(pair.live, key_j, key_i, _CMP_NEQ_OQ);
+  }
+
+ private:
+  LaneKernel lanes_[kSizeClassCount];
+  const float* mass_;
+  const float* key_;
+};
 
 }  // namespace
 
@@ -122,28 +143,23 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
                             const NeighborGrid& grid, ParticleSet& p) {
   const float rho0 = static_cast<float>(params.rest_density);
   const float k = static_cast<float>(params.gas_stiffness);
-  const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
+  const SizeClassLanes classes(params, kernels, p);
   const float* pos = p.position.data()->data();
   const float* mass = p.mass.data();
-  const float* key = classKey(params, p);
-  const bool key_is_mass = key == mass;
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     const int ci = classIndex(p.size_class[i]);
-    const LaneKernel& own = lanes[ci];
-    const LaneKernel& other = lanes[1 - ci];
     const LaneCentre centre(pos, i);
-    const __m512 key_i = _mm512_set1_ps(key[i]);
+    const __m512 key_i = classes.keyOf(i);
     const auto list = grid.neighbors(i);
     __m512 sum = _mm512_setzero_ps();
     for (std::uint32_t b = 0; b < list.size(); b += 16) {
       const PairBatch pair(list, b, centre, pos);
-      __m512 w = poly6(own, pair.r2);
+      __m512 w = poly6(classes.own(ci), pair.r2);
       const __m512 mj = gather(pair.live, pair.j, mass);  // dead lanes: mass 0, so they add nothing
-      const __m512 key_j = key_is_mass ? mj : gather(pair.live, pair.j, key);
-      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(pair.live, key_j, key_i, _CMP_NEQ_OQ);
-      if (mixed) w = average(mixed, w, poly6(other, pair.r2));
+      const __mmask16 mixed = classes.mixed(pair, mj, key_i);
+      if (mixed) w = average(mixed, w, poly6(classes.other(ci), pair.r2));
       sum = _mm512_fmadd_ps(mj, w, sum);  // eq. (3.11)
     }
     storeDensity(p, i, p.mass[i] * sph::poly6(kernels[ci], 0.0f) + _mm512_reduce_add_ps(sum), k, rho0);
@@ -153,12 +169,10 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 void computeAccelerations(const SimParams& params, const KernelTable& kernels,
                           const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
   const ForceConstants constants(params);
-  const LaneKernel lanes[kSizeClassCount] = {LaneKernel(kernels[0]), LaneKernel(kernels[1])};
+  const SizeClassLanes classes(params, kernels, p);
   const float* pos = p.position.data()->data();
   const float* vel = p.velocity.data()->data();
   const float* mass = p.mass.data();
-  const float* key = classKey(params, p);
-  const bool key_is_mass = key == mass;
   const float* volume = p.volume.data();
   const float* pressure_term = p.pressure_term.data();
   const float* surface_distance = p.surface_distance.data();
@@ -167,13 +181,11 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
 #pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
     const int ci = classIndex(p.size_class[i]);
-    const LaneKernel& own = lanes[ci];
-    const LaneKernel& other = lanes[1 - ci];
     const LaneCentre centre(pos, i);
     const __m512 uxi = _mm512_set1_ps(vel[3 * i]);
     const __m512 uyi = _mm512_set1_ps(vel[3 * i + 1]);
     const __m512 uzi = _mm512_set1_ps(vel[3 * i + 2]);
-    const __m512 key_i = _mm512_set1_ps(key[i]);
+    const __m512 key_i = classes.keyOf(i);
     const __m512 pti = _mm512_set1_ps(pressure_term[i]);
 
     const __m512 zero = _mm512_setzero_ps();
@@ -198,14 +210,13 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
       }
       const __m512 inv_r = inverseLength(r2);
       const __m512 rl = r2 * inv_r;
-      PairKernels kern = forceKernels(own, r2, rl, inv_r);
+      PairKernels kern = forceKernels(classes.own(ci), r2, rl, inv_r);
       // Dead lanes gather mass and volume 0, so every term below is 0 there.
       const __m512 mj = gather(live, j, mass);
       const __m512 volj = gather(live, j, volume);
-      const __m512 key_j = key_is_mass ? mj : gather(live, j, key);
-      const __mmask16 mixed = _mm512_mask_cmp_ps_mask(live, key_j, key_i, _CMP_NEQ_OQ);
+      const __mmask16 mixed = classes.mixed(pair, mj, key_i);
       if (mixed) {
-        const PairKernels o = forceKernels(other, r2, rl, inv_r);
+        const PairKernels o = forceKernels(classes.other(ci), r2, rl, inv_r);
         kern = {average(mixed, kern.spiky, o.spiky), average(mixed, kern.visc, o.visc),
                 average(mixed, kern.cgrad, o.cgrad), average(mixed, kern.clap, o.clap)};
       }
