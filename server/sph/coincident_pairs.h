@@ -11,11 +11,9 @@
 #include <cstdint>
 
 #include "sph/fluid_stages.h"
+#include "sph/hashed_direction.h"
 
 namespace sph {
-
-// Unit vector drawn from a 64-bit key (splitmix64, then a uniform point on the sphere).
-Vec3 hashedUnitVector(std::uint64_t key);
 
 // The direction particle id_i is pushed away from id_j when both sit on the same point;
 // coincidentPairDirection(a, b) == -coincidentPairDirection(b, a).

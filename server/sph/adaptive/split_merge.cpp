@@ -5,8 +5,8 @@
 #include <limits>
 
 #include "sph/adaptive/decide.h"
-#include "sph/coincident_pairs.h"
 #include "sph/collision.h"
+#include "sph/hashed_direction.h"
 
 namespace sph {
 

@@ -1,5 +1,7 @@
-#include "sph/coincident_pairs.h"
+#include "sph/hashed_direction.h"
 
+
+#include <algorithm>
 #include <cmath>
 
 namespace sph {
