@@ -1,6 +1,5 @@
 #include "sph/hashed_direction.h"
 
-
 #include <algorithm>
 #include <cmath>
 
