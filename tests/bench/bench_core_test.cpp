@@ -14,6 +14,16 @@ gaze::GazeRecording threeSamples() {
   return rec;
 }
 
+// A 0.5 m box with water from its floor corner up to `water_extent` on each axis.
+sph::Scene tinyScene(double water_extent, int large_particles) {
+  sph::Scene s;
+  s.name = "tiny";
+  s.boundary.box.max = Eigen::Vector3d(0.5, 0.5, 0.5);
+  s.water.max = Eigen::Vector3d::Constant(water_extent);
+  s.large_particles = large_particles;
+  return s;
+}
+
 TEST(GazeReplay, NewestValidSampleWithItsAge) {
   const gaze::GazeRecording rec = threeSamples();
   sph::GazeInput g = bench::gazeInputAt(rec, 0.25);
@@ -50,11 +60,7 @@ TEST(BenchRun, EveryMethodIsKnownAndOthersAreRejected) {
 }
 
 TEST(BenchRun, GazeMethodWithoutARecordingIsAClearError) {
-  sph::Scene s;
-  s.name = "tiny";
-  s.boundary.box.max = Eigen::Vector3d(0.5, 0.5, 0.5);
-  s.water.max = Eigen::Vector3d(0.5, 0.5, 0.5);
-  s.large_particles = 200;
+  const sph::Scene s = tinyScene(0.5, 200);
   bench::RunOptions options;
   options.frames = 2;
   try {
@@ -67,11 +73,7 @@ TEST(BenchRun, GazeMethodWithoutARecordingIsAClearError) {
 
 // Runs taking turns in one process (sph_bench --interleave) compute what they compute alone.
 TEST(BenchRun, InterleavedRunsMatchRunsAlone) {
-  sph::Scene s;
-  s.name = "tiny";
-  s.boundary.box.max = Eigen::Vector3d(0.5, 0.5, 0.5);
-  s.water.max = Eigen::Vector3d(0.25, 0.25, 0.25);
-  s.large_particles = 300;
+  const sph::Scene s = tinyScene(0.25, 300);
   const gaze::GazeRecording rec = threeSamples();
   bench::RunOptions options;
   options.frames = 12;
