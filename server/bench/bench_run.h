@@ -71,6 +71,8 @@ class SceneRun {
   void stepFrame();
   // The result so far, with the end-of-run fields (mass at the end, neighbour stride) filled in.
   RunResult result() const;
+  // The simulation as the last frame left it (benchmarks start from a run's state).
+  const sph::Simulation& simulation() const { return *sim_; }
 
  private:
   RunOptions options_;
