@@ -97,8 +97,14 @@ void NeighborGrid::build(const ParticleSet& particles) {
       // The block packs its lists from the start of its particles' slots.
       std::size_t cursor = begin * stride_;
       const std::size_t region_end = end * stride_;
+      CandidateRows rows;
       for (std::size_t i = begin; i < end; ++i) {
-        const std::uint32_t count = gatherNeighbors(particles, i, neighbor_index_.data() + cursor, region_end - cursor);
+        // Particles in cell order (the arrays are re-sorted every few steps) come in runs that
+        // share one cell and so one set of candidate rows.
+        if (i == begin || particle_cell_[i] != particle_cell_[i - 1]) rows = candidateRows(particle_cell_[i]);
+        const std::uint32_t count = scanCandidates(rows, particles.position[i], particles.support[i],
+                                                   static_cast<std::uint32_t>(i), neighbor_index_.data() + cursor,
+                                                   region_end - cursor);
         max_count = std::max(max_count, count);
         // A list keeps at most stride - 1 entries, so the ones before i used at most
         // (i - begin) (stride - 1) slots and list i always has stride slots left in the range.
@@ -115,34 +121,29 @@ void NeighborGrid::build(const ParticleSet& particles) {
   }
 }
 
-std::uint32_t NeighborGrid::gatherNeighbors(const ParticleSet& particles, std::size_t i, std::uint32_t* out,
-                                            std::size_t room) const {
-  const Vec3 pi = particles.position[i];
-  const float hi = particles.support[i];
-  const std::uint32_t cell = particle_cell_[i];
+NeighborGrid::CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) const {
   const int cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims_[0]));
   const int cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims_[0])) % static_cast<std::uint32_t>(dims_[1]));
   const int cz = static_cast<int>(cell / static_cast<std::uint32_t>(dims_[0] * dims_[1]));
   constexpr int R = kCellsPerSupport;
   const int x0 = std::max(cx - R, 0);
   const int x1 = std::min(cx + R, dims_[0] - 1);
-
-  const auto self = static_cast<std::uint32_t>(i);
-  std::uint32_t count = 0;
+  CandidateRows out;
   for (int z = std::max(cz - R, 0); z <= std::min(cz + R, dims_[2] - 1); ++z) {
     for (int y = std::max(cy - R, 0); y <= std::min(cy + R, dims_[1] - 1); ++y) {
       // Cells x0..x1 of one row are contiguous in the sorted list.
       const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
-      count = gatherRow(cell_start_[row + x0], cell_start_[row + x1 + 1], pi, hi, self, out, room, count);
+      out.begin[out.count] = cell_start_[row + x0];
+      out.end[out.count] = cell_start_[row + x1 + 1];
+      ++out.count;
     }
   }
-  return count;
+  return out;
 }
 
 #if defined(__AVX512F__) && !defined(SPH_SCALAR_NEIGHBORS)
-std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi,
-                                      float hi, std::uint32_t self, std::uint32_t* out,
-                                      std::size_t room, std::uint32_t count) const {
+std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi,
+                                           std::uint32_t self, std::uint32_t* out, std::size_t room) const {
   // 16 candidates at a time; compress-store keeps the accepted ones in candidate order, so the
   // lists are the same as the scalar loop's (and the same for any thread count).
   const __m512 px = _mm512_set1_ps(pi.x());
@@ -152,51 +153,56 @@ std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, co
   const __m512 half = _mm512_set1_ps(0.5f);
   const __m512i self_v = _mm512_set1_epi32(static_cast<int>(self));
   const auto capacity = static_cast<std::uint32_t>(stride_ - 1);
-  for (std::uint32_t k = begin; k < end; k += 16) {
-    const std::uint32_t left = end - k;
-    const __mmask16 live = left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
-    const __m512 dx = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_x_.data() + k), px);
-    const __m512 dy = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_y_.data() + k), py);
-    const __m512 dz = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_z_.data() + k), pz);
-    // reach = (hi + hj) / 2, eq. (3.34)
-    const __m512 reach =
-        _mm512_fmadd_ps(_mm512_maskz_loadu_ps(live, sorted_support_.data() + k), half, half_hi);
-    const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
-    const __m512i j = _mm512_maskz_loadu_epi32(live, cell_particles_.data() + k);
-    const __mmask16 accept = _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) &
-                             _mm512_cmpneq_epi32_mask(j, self_v);
-    const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accept));
-    // Compress in a register and store all 16 lanes while the block's range has room for them
-    // (a compress-store straight to memory is several times slower on current cores; the lanes
-    // past the list land where the next list will be written); near the end of the range store
-    // only the accepted lanes, so no write reaches another block's range.
-    if (count + 16 <= room) {
-      _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
-    } else if (count + accepted <= capacity) {
-      alignas(64) std::uint32_t lanes[16];
-      _mm512_store_si512(lanes, _mm512_maskz_compress_epi32(accept, j));
-      for (std::uint32_t a = 0; a < accepted; ++a) out[count + a] = lanes[a];
+  std::uint32_t count = 0;
+  for (int r = 0; r < rows.count; ++r) {
+    for (std::uint32_t k = rows.begin[r]; k < rows.end[r]; k += 16) {
+      const std::uint32_t left = rows.end[r] - k;
+      const __mmask16 live = left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
+      const __m512 dx = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_x_.data() + k), px);
+      const __m512 dy = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_y_.data() + k), py);
+      const __m512 dz = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_z_.data() + k), pz);
+      // reach = (hi + hj) / 2, eq. (3.34)
+      const __m512 reach =
+          _mm512_fmadd_ps(_mm512_maskz_loadu_ps(live, sorted_support_.data() + k), half, half_hi);
+      const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
+      const __m512i j = _mm512_maskz_loadu_epi32(live, cell_particles_.data() + k);
+      const __mmask16 accept = _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) &
+                               _mm512_cmpneq_epi32_mask(j, self_v);
+      const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accept));
+      // Compress in a register and store all 16 lanes while the block's range has room for them
+      // (a compress-store straight to memory is several times slower on current cores; the lanes
+      // past the list land where the next list will be written); near the end of the range
+      // store only the accepted lanes, so no write reaches another block's range.
+      if (count + 16 <= room) {
+        _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
+      } else if (count + accepted <= capacity) {
+        alignas(64) std::uint32_t lanes[16];
+        _mm512_store_si512(lanes, _mm512_maskz_compress_epi32(accept, j));
+        for (std::uint32_t a = 0; a < accepted; ++a) out[count + a] = lanes[a];
+      }
+      count += accepted;
     }
-    count += accepted;
   }
   return count;
 }
 #else
-std::uint32_t NeighborGrid::gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi,
-                                      float hi, std::uint32_t self, std::uint32_t* out,
-                                      std::size_t /*room*/, std::uint32_t count) const {
+std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi,
+                                           std::uint32_t self, std::uint32_t* out, std::size_t /*room*/) const {
   const auto last_slot = static_cast<std::uint32_t>(stride_ - 1);
-  for (std::uint32_t k = begin; k < end; ++k) {
-    const float dx = sorted_x_[k] - pi.x();
-    const float dy = sorted_y_[k] - pi.y();
-    const float dz = sorted_z_[k] - pi.z();
-    const float reach = 0.5f * (hi + sorted_support_[k]);  // eq. (3.34)
-    const std::uint32_t j = cell_particles_[k];
-    // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so a
-    // branch here mispredicts often. Write always, advance the cursor only on acceptance.
-    const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != self);
-    out[std::min<std::uint32_t>(count, last_slot)] = j;
-    count += accept;
+  std::uint32_t count = 0;
+  for (int r = 0; r < rows.count; ++r) {
+    for (std::uint32_t k = rows.begin[r]; k < rows.end[r]; ++k) {
+      const float dx = sorted_x_[k] - pi.x();
+      const float dy = sorted_y_[k] - pi.y();
+      const float dz = sorted_z_[k] - pi.z();
+      const float reach = 0.5f * (hi + sorted_support_[k]);  // eq. (3.34)
+      const std::uint32_t j = cell_particles_[k];
+      // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so
+      // a branch here mispredicts often. Write always, advance the cursor only on acceptance.
+      const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != self);
+      out[std::min<std::uint32_t>(count, last_slot)] = j;
+      count += accept;
+    }
   }
   return count;
 }

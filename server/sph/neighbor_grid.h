@@ -47,25 +47,34 @@ class NeighborGrid {
 
  private:
   std::uint32_t cellOf(const Vec3& p) const;
-  // Writes the neighbours of particle i to out[0...]; `room` slots from `out` belong to the
-  // particle's block (at least the stride). Returns the true count (may exceed the stride).
-  std::uint32_t gatherNeighbors(const ParticleSet& particles, std::size_t i, std::uint32_t* out,
-                                std::size_t room) const;
-  // Appends the accepted candidates k in [begin, end) of the sorted list to out[count...]; returns
-  // the new count. Writes past the stride are dropped (the count still grows, so build() regrows).
-  std::uint32_t gatherRow(std::uint32_t begin, std::uint32_t end, const Vec3& pi, float hi,
-                          std::uint32_t self, std::uint32_t* out, std::size_t room,
-                          std::uint32_t count) const;
+
+  // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
+  // cells. Half-radius cells (25 rows of 5) test about 40 % fewer candidates, but each row costs its
+  // setup and a partly empty 16-lane batch: measured on the dambreak state, full cells were 20-30 %
+  // faster for 20,000 SMALL particles and about 35 % faster for the gaze method's mixed set.
+  static constexpr int kCellsPerSupport = 1;
+
+  // The candidates of a particle: the particles of the 27 cells around its cell, as (up to) 9
+  // rows of 3 cells, each row a contiguous range of the sorted arrays. Particles in one cell
+  // share them: the arrays are re-sorted into cell order every few steps, so they come in runs.
+  static constexpr int kMaxRows = (2 * kCellsPerSupport + 1) * (2 * kCellsPerSupport + 1);
+  struct CandidateRows {
+    std::uint32_t begin[kMaxRows];
+    std::uint32_t end[kMaxRows];
+    int count = 0;
+  };
+  CandidateRows candidateRows(std::uint32_t cell) const;
+  // Writes the candidates within reach of a particle at pi with support hi (itself, `self`,
+  // excluded) to out[0...], in candidate order; `room` slots from `out` belong to the particle's
+  // block (at least the stride). Returns the true count: writes past the stride are dropped, the
+  // count still grows, so build() regrows the stride.
+  std::uint32_t scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi, std::uint32_t self,
+                               std::uint32_t* out, std::size_t room) const;
 
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
   float cell_size_ = 1.0f;
   float inv_cell_size_ = 1.0f;
   int dims_[3] = {1, 1, 1};
-  // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
-  // cells. Half-radius cells (25 rows of 5) test about 40 % fewer candidates, but each row costs a
-  // call and a partly empty 16-lane batch: measured on the dambreak state, full cells were 20-30 %
-  // faster for 20,000 SMALL particles and about 35 % faster for the gaze method's mixed set.
-  static constexpr int kCellsPerSupport = 1;
   std::size_t stride_ = 96;
   // Particles per block of the parallel list build; each block packs its own lists.
   static constexpr std::size_t kBlockSize = 256;

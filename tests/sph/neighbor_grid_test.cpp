@@ -50,13 +50,8 @@ std::vector<std::vector<std::uint32_t>> listsWithThreads(const sph::ParticleSet&
   return lists;
 }
 
-TEST(NeighborGrid, PackedListsAreExactForAnyThreadCount) {
-  const sph::ParticleSet p = denseCloud();
-  std::size_t growths = 0;
-  const auto one = listsWithThreads(p, 1, &growths);
-  EXPECT_GE(growths, 1u) << "the cloud should be dense enough to outgrow the starting stride";
-
-  // Brute force: every pair within reach, in any order.
+// Every pair within reach, in any order: brute force against the grid's lists.
+void expectExactLists(const sph::ParticleSet& p, const std::vector<std::vector<std::uint32_t>>& lists) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     std::vector<std::uint32_t> expected;
     for (std::size_t j = 0; j < p.size(); ++j) {
@@ -65,13 +60,40 @@ TEST(NeighborGrid, PackedListsAreExactForAnyThreadCount) {
         expected.push_back(static_cast<std::uint32_t>(j));
       }
     }
-    std::vector<std::uint32_t> listed = one[i];
+    std::vector<std::uint32_t> listed = lists[i];
     std::sort(listed.begin(), listed.end());
     ASSERT_EQ(listed, expected) << "particle " << i;
   }
+}
+
+TEST(NeighborGrid, PackedListsAreExactForAnyThreadCount) {
+  const sph::ParticleSet p = denseCloud();
+  std::size_t growths = 0;
+  const auto one = listsWithThreads(p, 1, &growths);
+  EXPECT_GE(growths, 1u) << "the cloud should be dense enough to outgrow the starting stride";
+  expectExactLists(p, one);
   for (int threads : {2, 3}) {
     EXPECT_EQ(listsWithThreads(p, threads, &growths), one) << threads << " threads";
   }
+}
+
+// The simulation re-sorts the particles into cell order, so most particles share their cell's
+// candidate rows with the ones before them: the lists must stay exact there too.
+TEST(NeighborGrid, ListsAreExactForParticlesInCellOrder) {
+  sph::ParticleSet p = denseCloud();
+  const auto classes = sph::thesisPreset().classes();
+  sph::Aabb bounds;
+  bounds.min = Eigen::Vector3d::Zero();
+  bounds.max = Eigen::Vector3d::Constant(0.12);
+  sph::NeighborGrid grid;
+  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), p.size());
+  grid.bin(p);
+  const std::vector<std::uint32_t> order(grid.cellOrder().begin(), grid.cellOrder().end());
+  p.permute(order);
+  std::size_t growths = 0;
+  const auto one = listsWithThreads(p, 1, &growths);
+  expectExactLists(p, one);
+  EXPECT_EQ(listsWithThreads(p, 2, &growths), one);
 }
 
 }  // namespace
