@@ -9,6 +9,7 @@ namespace sph {
 
 ParticleSet::ParticleSet(std::size_t capacity) : capacity_(capacity) {
   forEachAttribute([&](auto& v) { v.reserve(capacity_); });
+  removal_moves_.reserve(capacity_ / 2);  // a merge removes one of two particles
 }
 
 std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const SizeClassProps& props) {
@@ -85,15 +86,22 @@ std::size_t ParticleSet::compact(std::span<const std::uint8_t> keep) {
 
 void ParticleSet::swapRemove(std::span<const std::uint8_t> keep) {
   if (keep.size() != size()) throw std::invalid_argument("swapRemove: keep size mismatch");
-  // Every index above `hole` has been handled when we get there, so the last particle is a kept one.
+  // First the moves, from the highest hole down: every index above `hole` has been handled when
+  // we get there, so the last particle is a kept one. Then each attribute makes all the moves in
+  // that order: one attribute at a time, the loads of different moves are independent, so the
+  // CPU overlaps their cache misses (moving every attribute of one particle at a time did not).
+  removal_moves_.clear();
+  std::size_t last = keep.size();
   for (std::size_t hole = keep.size(); hole-- > 0;) {
     if (keep[hole]) continue;
-    const std::size_t last = size() - 1;
-    forEachAttribute([&](auto& v) {
-      if (hole != last) v[hole] = v[last];
-      v.pop_back();
-    });
+    --last;
+    if (hole != last) removal_moves_.push_back({static_cast<std::uint32_t>(hole), static_cast<std::uint32_t>(last)});
   }
+  const std::size_t new_size = last;
+  forEachAttribute([&](auto& v) {
+    for (const RemovalMove& m : removal_moves_) v[m.hole] = v[m.from];
+    v.erase(v.begin() + static_cast<std::ptrdiff_t>(new_size), v.end());
+  });
 }
 
 double ParticleSet::totalMass() const {

@@ -77,6 +77,10 @@ class ParticleSet {
   }
 
  private:
+  struct RemovalMove {
+    std::uint32_t hole, from;
+  };
+  std::vector<RemovalMove> removal_moves_;  // swapRemove's scratch
   std::size_t capacity_;
   std::uint32_t next_id_ = 0;
 };

@@ -118,6 +118,13 @@ TEST(ParticleSet, SwapRemoveMovesTheLastParticlesIntoTheHoles) {
   const std::uint32_t expected[] = {0, 5, 2, 3, 6};
   for (std::size_t k = 0; k < p.size(); ++k) expectParticleIs(p, k, expected[k]);
   EXPECT_THROW(p.swapRemove(std::vector<std::uint8_t>(9, 1)), std::invalid_argument);
+
+  // A moved particle moves again: 4 fills 3, then (now last) fills 1.
+  sph::ParticleSet q = makeSet(5, 16);
+  q.swapRemove(std::vector<std::uint8_t>{1, 0, 1, 0, 1});
+  ASSERT_EQ(q.size(), 3u);
+  const std::uint32_t chained[] = {0, 4, 2};
+  for (std::size_t k = 0; k < q.size(); ++k) expectParticleIs(q, k, chained[k]);
 }
 
 TEST(ParticleSet, AppendZeroedGivesFreshIdsAndZeroState) {
