@@ -187,9 +187,8 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   sph::choosePartners(p, sim.grid(), decision, partner);
   ASSERT_EQ(partner[a], -1) << "no merging neighbour within reach";
   ASSERT_EQ(partner[b], -1);
-  std::vector<std::uint32_t> lonely;
-  std::vector<std::int32_t> nearest;
-  sph::pairStragglers(p, decision, partner, 2.0f * h, lonely, nearest);
+  sph::StragglerScratch scratch;
+  sph::pairStragglers(p, decision, partner, 2.0f * h, scratch);
   EXPECT_EQ(partner[a], static_cast<std::int32_t>(b));
   EXPECT_EQ(partner[b], static_cast<std::int32_t>(a));
   EXPECT_EQ(partner[c], -1) << "too far from every other straggler";
@@ -201,6 +200,57 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   EXPECT_EQ(counts.merges, 1);
   EXPECT_EQ(p.countOf(sph::SizeClass::Large), 1u);
   EXPECT_EQ(p.totalMass(), mass);
+}
+
+// The sweep along x must pair exactly as comparing every two stragglers would: mutual nearest
+// within the distance, ties to the lower index. A lattice (many equal distances) with gaps.
+TEST(SplitMerge, StragglerSweepPairsAsTheQuadraticSearch) {
+  const auto classes = sph::thesisPreset().classes();
+  const auto& small = classes[sph::classIndex(sph::SizeClass::Small)];
+  sph::ParticleSet p(400);
+  const float spacing = 0.03f;
+  for (int k = 0; k < 1000 && p.size() < 400; ++k) {
+    if ((k * 7919) % 5 == 0) continue;  // gaps, so some stragglers lose their nearest
+    const sph::Vec3 x(spacing * static_cast<float>(k % 10), spacing * static_cast<float>((k / 10) % 10),
+                      spacing * static_cast<float>(k / 100));
+    p.add(x, sph::Vec3::Zero(), sph::SizeClass::Small, small);
+  }
+  const std::size_t n = p.size();
+  const float max_distance = 1.2f * spacing;
+  std::vector<std::int8_t> decision(n, sph::kMerge);
+  for (std::size_t i = 0; i < n; i += 9) decision[i] = sph::kRemain;
+
+  // Reference: every pair, indices ascending.
+  std::vector<std::uint32_t> lonely;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (decision[i] == sph::kMerge) lonely.push_back(static_cast<std::uint32_t>(i));
+  }
+  std::vector<std::int32_t> nearest(lonely.size(), -1);
+  for (std::size_t a = 0; a < lonely.size(); ++a) {
+    float best = max_distance * max_distance;
+    for (std::size_t b = 0; b < lonely.size(); ++b) {
+      const float d2 = (p.position[lonely[a]] - p.position[lonely[b]]).squaredNorm();
+      if (a != b && d2 < best) {
+        best = d2;
+        nearest[a] = static_cast<std::int32_t>(b);
+      }
+    }
+  }
+  std::vector<std::int32_t> expected(n, -1);
+  int pairs = 0;
+  for (std::size_t a = 0; a < lonely.size(); ++a) {
+    const std::int32_t b = nearest[a];
+    if (b >= 0 && nearest[static_cast<std::size_t>(b)] == static_cast<std::int32_t>(a)) {
+      expected[lonely[a]] = static_cast<std::int32_t>(lonely[static_cast<std::size_t>(b)]);
+      ++pairs;
+    }
+  }
+  ASSERT_GT(pairs, 100) << "the lattice should pair most stragglers";
+
+  std::vector<std::int32_t> partner(n, -1);
+  sph::StragglerScratch scratch;
+  sph::pairStragglers(p, decision, partner, max_distance, scratch);
+  EXPECT_EQ(partner, expected);
 }
 
 }  // namespace

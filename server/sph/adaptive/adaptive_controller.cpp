@@ -99,8 +99,7 @@ void AdaptiveController::apply(Simulation& sim) {
     // in LARGE water, near enough that the merged particle lands inside the water between them.
     const auto classes = sim.params().classes();
     pairStragglers(p, decision_, partner_,
-                   2.0f * static_cast<float>(classes[classIndex(SizeClass::Small)].support), lonely_,
-                   lonely_nearest_);
+                   2.0f * static_cast<float>(classes[classIndex(SizeClass::Small)].support), stragglers_);
   } else {
     std::fill(partner_.begin(), partner_.end(), -1);
   }

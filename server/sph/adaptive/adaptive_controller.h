@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sph/adaptive/method.h"
+#include "sph/adaptive/split_merge.h"
 #include "sph/camera.h"
 #include "sph/simulation.h"
 
@@ -57,8 +58,7 @@ class AdaptiveController : public AdaptiveStep {
   std::vector<std::int32_t> partner_;
   std::vector<std::uint8_t> keep_;
   std::vector<std::uint32_t> split_slot_;
-  std::vector<std::uint32_t> lonely_;
-  std::vector<std::int32_t> lonely_nearest_;
+  StragglerScratch stragglers_;
 };
 
 // nullptr for Method::Regular.

@@ -67,34 +67,52 @@ void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
 }
 
 void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, float max_distance,
-                    std::vector<std::uint32_t>& lonely, std::vector<std::int32_t>& nearest) {
-  lonely.clear();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (partner[i] < 0 && decision[i] == kMerge && p.size_class[i] == SizeClass::Small) {
-      lonely.push_back(static_cast<std::uint32_t>(i));
-    }
+                    std::span<std::int32_t> partner, float max_distance, StragglerScratch& scratch) {
+  // Branch-free: whether a particle is a straggler follows no pattern a branch predictor could
+  // learn, and this serial scan touches every particle.
+  const std::size_t n = p.size();
+  std::vector<std::uint32_t>& lonely = scratch.lonely;
+  if (lonely.size() < n) lonely.resize(n);
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    lonely[found] = static_cast<std::uint32_t>(i);
+    found += (partner[i] < 0) & (decision[i] == kMerge) & (p.size_class[i] == SizeClass::Small);
   }
-  // The pairing below is quadratic and serial: a spray of thousands of isolated droplets must not
-  // stall the step, so at most this many (the lowest indices, deterministically) pair per step.
+  // The pairing below is serial: a spray of thousands of isolated droplets must not stall the
+  // step, so at most this many (the lowest indices, deterministically) pair per step.
   constexpr std::size_t kMaxStragglersPerStep = 512;
-  if (lonely.size() > kMaxStragglersPerStep) lonely.resize(kMaxStragglersPerStep);
-  if (lonely.size() < 2) return;
-  // Nearest other straggler of each (ties to the lower index); O(L^2) over a handful.
-  nearest.assign(lonely.size(), -1);
+  const std::size_t count = std::min(found, kMaxStragglersPerStep);
+  if (count < 2) return;
+  const auto x = [&](std::uint32_t a) { return p.position[lonely[a]].x(); };
+
+  // Nearest other straggler of each: a sweep along x visits only the ones less than max_distance
+  // away in x (the others are farther in 3D too), instead of all L^2 pairs; stragglers spread
+  // along the water, so that is a few per straggler. The winner does not depend on the visiting
+  // order: the least distance, ties to the lower position in `lonely` (the lower index).
+  std::vector<std::uint32_t>& by_x = scratch.by_x;
+  by_x.resize(count);
+  for (std::uint32_t a = 0; a < count; ++a) by_x[a] = a;
+  std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return x(a) < x(b) || (x(a) == x(b) && a < b);
+  });
+  std::vector<std::int32_t>& nearest = scratch.nearest;
+  nearest.assign(count, -1);
   const float max_d2 = max_distance * max_distance;
-  for (std::size_t a = 0; a < lonely.size(); ++a) {
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::uint32_t a = by_x[s];
+    const Vec3 xa = p.position[lonely[a]];
     float best = max_d2;
-    for (std::size_t b = 0; b < lonely.size(); ++b) {
-      if (a == b) continue;
-      const float d2 = (p.position[lonely[a]] - p.position[lonely[b]]).squaredNorm();
+    const auto consider = [&](std::uint32_t b) {
+      const float d2 = (xa - p.position[lonely[b]]).squaredNorm();
       if (d2 < best || (d2 == best && nearest[a] >= 0 && static_cast<std::int32_t>(b) < nearest[a])) {
         best = d2;
         nearest[a] = static_cast<std::int32_t>(b);
       }
-    }
+    };
+    for (std::size_t t = s + 1; t < count && x(by_x[t]) - xa.x() <= max_distance; ++t) consider(by_x[t]);
+    for (std::size_t t = s; t-- > 0 && xa.x() - x(by_x[t]) <= max_distance;) consider(by_x[t]);
   }
-  for (std::size_t a = 0; a < lonely.size(); ++a) {
+  for (std::size_t a = 0; a < count; ++a) {
     const std::int32_t b = nearest[a];
     if (b >= 0 && nearest[static_cast<std::size_t>(b)] == static_cast<std::int32_t>(a)) {
       partner[lonely[a]] = static_cast<std::int32_t>(lonely[static_cast<std::size_t>(b)]);
@@ -121,7 +139,7 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   std::uint32_t splits = 0;
   for (std::size_t i = 0; i < n; ++i) {
     split_slot[i] = splits;
-    splits += (decision[i] == kSplit && p.size_class[i] == SizeClass::Large);
+    splits += (decision[i] == kSplit) & (p.size_class[i] == SizeClass::Large);  // branch-free
   }
   const std::size_t first_child = p.appendZeroed(splits);
   counts.splits = static_cast<int>(splits);

@@ -19,14 +19,19 @@ namespace sph {
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid,
                     std::span<const std::int8_t> decision, std::span<std::int32_t> partner);
 
+// Scratch of pairStragglers, kept between steps so the step does not allocate.
+struct StragglerScratch {
+  std::vector<std::uint32_t> lonely;   // the stragglers' particle indices, ascending (room for all)
+  std::vector<std::int32_t> nearest;   // per straggler: position in `lonely` of its nearest, or -1
+  std::vector<std::uint32_t> by_x;     // positions in `lonely`, sorted by x
+};
+
 // Stragglers: SMALL particles that want to merge but found no candidate at all within the
 // neighbour reach (partner -1), typically one child left behind in LARGE water, would stay SMALL
-// for good. Pairs them among themselves: mutual nearest within `max_distance`, serially in index
-// order (they are few; at most 512 per step), so the result is deterministic. `lonely` and
-// `nearest` are scratch.
+// for good. Pairs them among themselves: mutual nearest within `max_distance` (ties to the lower
+// index), at most 512 per step (the lowest indices), so the result is deterministic.
 void pairStragglers(const ParticleSet& particles, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, float max_distance,
-                    std::vector<std::uint32_t>& lonely, std::vector<std::int32_t>& nearest);
+                    std::span<std::int32_t> partner, float max_distance, StragglerScratch& scratch);
 
 struct SplitMergeCounts {
   int splits = 0;
