@@ -55,25 +55,13 @@ Projector::Projector(const ScreenCamera& camera)
   // A sphere of radius r at view depth z covers r * P11 / z of the half-height in NDC, i.e.
   // r * P11 * H / (2 z) pixels, i.e. r * P11 / (2 z aspect) of the width.
   focal_over_width_ = camera.projection(1, 1) / (2.0 * aspect_);
-  row_x_ = view_projection_.row(0).transpose().cast<float>();
-  row_y_ = view_projection_.row(1).transpose().cast<float>();
-  row_w_ = view_projection_.row(3).transpose().cast<float>();
-  depth_row_ = (-view_depth_row_).cast<float>();
-  focal_over_width_f_ = static_cast<float>(focal_over_width_);
-}
-
-ScreenDisc Projector::projectFast(const Eigen::Vector3f& center, float radius) const {
-  ScreenDisc d;
-  const auto dot = [&](const Eigen::Vector4f& row) { return row.head<3>().dot(center) + row[3]; };
-  const float w = dot(row_w_);
-  const float depth = dot(depth_row_);
-  if (!(w > 0.0f) || !(depth > 0.0f)) return d;
-  const float inv_w = 1.0f / w;
-  d.in_front = true;
-  d.x = 0.5f * (dot(row_x_) * inv_w + 1.0f);
-  d.y = 0.5f * (1.0f - dot(row_y_) * inv_w);
-  d.radius = radius * focal_over_width_f_ / depth;
-  return d;
+  for (int k = 0; k < 4; ++k) {
+    fast_.row_x[k] = static_cast<float>(view_projection_(0, k));
+    fast_.row_y[k] = static_cast<float>(view_projection_(1, k));
+    fast_.row_w[k] = static_cast<float>(view_projection_(3, k));
+    fast_.depth_row[k] = static_cast<float>(-view_depth_row_[k]);
+  }
+  fast_.focal_over_width = static_cast<float>(focal_over_width_);
 }
 
 ScreenDisc Projector::project(const Eigen::Vector3d& center, double radius) const {

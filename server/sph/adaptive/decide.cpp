@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 namespace sph {
 
 namespace {
@@ -88,34 +90,69 @@ void decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<st
   }
 }
 
+namespace {
+
+// eq. (3.47)-(3.48) for one particle, with the hysteresis ring. Distances are in units of the
+// viewport width (y is a fraction of the height).
+struct GazeCircle {
+  FastProjection projection;
+  float x, y, inv_aspect, inner_radius, outer_radius;
+
+  std::int8_t decide(float px, float py, float pz, float radius) const {
+    const FastScreenDisc disc = projection.project(px, py, pz, radius);
+    const float dx = disc.x - x;
+    const float dy = (disc.y - y) * inv_aspect;
+    const float dist2 = dx * dx + dy * dy;
+    const float inner = inner_radius + disc.radius;
+    const float outer = outer_radius + disc.radius;
+    // f = sgn(|r_i - r_gaze|^2 - (r_i + r_gaze)^2); SPLIT where f < 0. Behind the eye: MERGE.
+    const int split = disc.in_front & (dist2 < inner * inner);
+    const int merge = !disc.in_front | (dist2 > outer * outer);
+    // Arithmetic rather than a conditional: a split wins, and the ring (neither) is kRemain = 0.
+    return static_cast<std::int8_t>(split * kSplit + (1 - split) * merge * kMerge);
+  }
+};
+
+// Particles [begin, end): single precision, no branches and restrict-qualified arrays (the
+// decisions are bytes, which may otherwise alias anything), so that GCC vectorises the loop.
+void decideGazeRange(const GazeCircle& shared, const float* __restrict xyz, const float* __restrict radius,
+                     std::int8_t* __restrict out, std::size_t begin, std::size_t end, bool hybrid) {
+  const GazeCircle gaze = shared;
+  if (hybrid) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::int8_t by_gaze = gaze.decide(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], radius[i]);
+      const std::int8_t by_surface = out[i];
+      out[i] = (by_gaze == kSplit && by_surface == kSplit)   ? kSplit
+               : (by_gaze == kMerge || by_surface == kMerge) ? kMerge
+                                                             : kRemain;
+    }
+  } else {
+    for (std::size_t i = begin; i < end; ++i) {
+      out[i] = gaze.decide(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], radius[i]);
+    }
+  }
+}
+
+}  // namespace
+
 void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
                   double gaze_y, const AdaptiveConfig& config, bool hybrid,
                   std::span<std::int8_t> out) {
   const Projector projector(camera);
-  const double inv_aspect = 1.0 / projector.aspect();
+  const GazeCircle gaze{projector.fast(),
+                        static_cast<float>(gaze_x),
+                        static_cast<float>(gaze_y),
+                        static_cast<float>(1.0 / projector.aspect()),
+                        static_cast<float>(config.gaze_radius),
+                        static_cast<float>(config.gaze_ring_radius)};
+  const float* xyz = particles.position.data()->data();  // packed x, y, z
+  const float* radius = particles.radius.data();
   const std::size_t n = particles.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const ScreenDisc disc = projector.projectFast(particles.position[i], particles.radius[i]);
-    std::int8_t gaze = kMerge;
-    if (disc.in_front) {
-      // Distances in units of the viewport width (y is a fraction of the height).
-      const double dx = disc.x - gaze_x;
-      const double dy = (disc.y - gaze_y) * inv_aspect;
-      const double dist2 = dx * dx + dy * dy;
-      const double inner = config.gaze_radius + disc.radius;
-      const double outer = config.gaze_ring_radius + disc.radius;
-      // eq. (3.47): f = sgn(|r_i - r_gaze|^2 - (r_i + r_gaze)^2); SPLIT where f < 0 (3.48).
-      gaze = dist2 < inner * inner ? kSplit : (dist2 > outer * outer ? kMerge : kRemain);
-    }
-    if (hybrid) {
-      const std::int8_t surface = out[i];
-      out[i] = (gaze == kSplit && surface == kSplit)   ? kSplit
-               : (gaze == kMerge || surface == kMerge) ? kMerge
-                                                       : kRemain;
-    } else {
-      out[i] = gaze;
-    }
+#pragma omp parallel
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    decideGazeRange(gaze, xyz, radius, out.data(), n * t / team, n * (t + 1) / team, hybrid);
   }
 }
 
