@@ -35,6 +35,7 @@ class NeighborGrid {
     return {neighbor_index_.data() + neighbor_start_[i], neighbor_count_[i]};
   }
   std::uint32_t neighborCount(std::size_t i) const { return neighbor_count_[i]; }
+  std::span<const std::uint32_t> neighborCounts() const { return neighbor_count_; }
 
   // Particle indices sorted by cell: the order to permute the particle arrays into.
   std::span<const std::uint32_t> cellOrder() const { return cell_particles_; }

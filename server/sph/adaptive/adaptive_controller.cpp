@@ -76,24 +76,18 @@ void AdaptiveController::apply(Simulation& sim) {
   // the gaze is tracked. For gaze, decideByGaze then overwrites the surface flags.
   const bool advance_field = use_surface || mode == GazeMode::Holding;
   sim.setSurfaceDistanceTracking(advance_field);
+  DecisionCounts wanted;
   if (advance_field) {
-    decideBySurface(sim, config_, decision_);
+    wanted = decideBySurface(sim, config_, decision_);
   }
   if (use_gaze) {
-    decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, method_ == Method::Hybrid, decision_);
+    wanted = decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, method_ == Method::Hybrid, decision_);
   }
 
   stats_ = AdaptiveStats{};
-  int split_wanted = 0;
-  int merge_wanted = 0;
-#pragma omp parallel for schedule(static) reduction(+ : split_wanted, merge_wanted)
-  for (std::size_t i = 0; i < n; ++i) {
-    split_wanted += decision_[i] == kSplit && p.size_class[i] == SizeClass::Large;
-    merge_wanted += decision_[i] == kMerge && p.size_class[i] == SizeClass::Small;
-  }
-  stats_.split_wanted = split_wanted;
-  stats_.merge_wanted = merge_wanted;
-  if (merge_wanted > 0) {
+  stats_.split_wanted = wanted.split_wanted;
+  stats_.merge_wanted = wanted.merge_wanted;
+  if (wanted.merge_wanted > 0) {
     choosePartners(p, sim.grid(), decision_, partner_);
     // Stragglers pair within two SMALL support radii: far enough to reach a sibling left behind
     // in LARGE water, near enough that the merged particle lands inside the water between them.

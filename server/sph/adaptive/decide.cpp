@@ -10,11 +10,10 @@ namespace sph {
 
 namespace {
 
-// Distance from x to the nearest boundary the particle could touch: box faces, sphere and cylinder
-// surfaces (the "boundaries" of (3.45), He et al. 2010).
-float boundaryDistance(const Vec3& x, const BoxState& box, const Boundary& boundary) {
+// Distance from x to the nearest obstacle surface: spheres and cylinders (with the box faces, the
+// "boundaries" of (3.45), He et al. 2010). Infinite when there are none.
+float obstacleDistance(const Vec3& x, const Boundary& boundary) {
   float d = std::numeric_limits<float>::infinity();
-  for (int a = 0; a < 3; ++a) d = std::min({d, x[a] - box.min[a], box.max[a] - x[a]});
   for (const Sphere& s : boundary.spheres) {
     const float dc = (x - s.centre.cast<float>()).norm() - static_cast<float>(s.radius);
     d = std::min(d, dc);
@@ -24,70 +23,133 @@ float boundaryDistance(const Vec3& x, const BoxState& box, const Boundary& bound
     const float dz = x.z() - static_cast<float>(c.z);
     d = std::min(d, std::sqrt(dx * dx + dz * dz) - static_cast<float>(c.radius));
   }
-  return std::max(d, 0.0f);
+  return d;
+}
+
+// What the second pass of decideBySurface needs from the first: the maxima of (3.45).
+struct FieldMaxima {
+  float pressure = 0.0f;
+  float distance = 0.0f;
+  std::uint32_t neighbors[kSizeClassCount] = {0, 0};
+};
+
+// The arrays of the surface decision, restrict-qualified: the flags are bytes, which may otherwise
+// alias anything, and GCC would not vectorise the passes.
+struct SurfaceArrays {
+  const float* __restrict xyz;  // packed x, y, z
+  const float* __restrict hop;
+  const float* __restrict normal_length;
+  const float* __restrict pressure;
+  const SizeClass* __restrict size_class;
+  const std::uint32_t* __restrict neighbors;
+  float* __restrict distance;  // surface_distance, written by the first pass
+  std::int8_t* __restrict out;
+};
+
+// First pass over [begin, end): d_i (0 on the surface, (3.44); else the smaller of this step's
+// hop and, with walls, the boundary distance) and the maxima. Obstacles (a loop over spheres and
+// cylinders) are a template switch, so the common case of a bare box vectorises.
+template <bool kObstacles>
+FieldMaxima surfaceDistances(const SurfaceArrays& a, std::size_t begin, std::size_t end, float surface_threshold,
+                             bool include_walls, const BoxState& box, const Boundary& boundary) {
+  const float inf = std::numeric_limits<float>::infinity();
+  // Plain scalars for the maxima, and no initializer-list min: GCC vectorises neither.
+  float max_distance = 0.0f, max_pressure = 0.0f;
+  std::uint32_t max_small = 0, max_large = 0;
+  // Float max reductions vectorise only where the order may change (exact for max): omp simd.
+#pragma omp simd reduction(max : max_distance, max_pressure, max_small, max_large)
+  for (std::size_t i = begin; i < end; ++i) {
+    const float x = a.xyz[3 * i], y = a.xyz[3 * i + 1], z = a.xyz[3 * i + 2];
+    float wall = std::min(std::min(std::min(x - box.min.x(), box.max.x() - x), std::min(y - box.min.y(), box.max.y() - y)),
+                          std::min(z - box.min.z(), box.max.z() - z));
+    if constexpr (kObstacles) wall = std::min(wall, obstacleDistance(Vec3(x, y, z), boundary));
+    const float hop = a.hop[i];
+    float d = include_walls ? std::min(hop, std::max(wall, 0.0f)) : hop;
+    d = a.normal_length[i] >= surface_threshold ? 0.0f : d;
+    a.distance[i] = d;
+    max_distance = std::max(max_distance, d < inf ? d : 0.0f);
+    max_pressure = std::max(max_pressure, a.pressure[i]);
+    const std::uint32_t count = a.neighbors[i];
+    const bool small = a.size_class[i] == SizeClass::Small;
+    max_small = std::max(max_small, small ? count : 0u);
+    max_large = std::max(max_large, small ? 0u : count);
+  }
+  FieldMaxima m;
+  m.distance = max_distance;
+  m.pressure = max_pressure;
+  m.neighbors[0] = max_small;
+  m.neighbors[1] = max_large;
+  return m;
 }
 
 }  // namespace
 
-void decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out) {
+DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out) {
   ParticleSet& p = sim.particles();
-  const NeighborGrid& grid = sim.grid();
   const std::size_t n = p.size();
   const float surface_threshold =
       static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());  // (3.44)
   const BoxState box = sim.boxNow();
   const Boundary& boundary = sim.scene().boundary;
-  const float inf = std::numeric_limits<float>::infinity();
+  const bool obstacles = !boundary.spheres.empty() || !boundary.cylinders.empty();
+  const SurfaceArrays arrays{p.position.data()->data(), p.surface_hop.data(), p.normal_length.data(),
+                             p.pressure.data(), p.size_class.data(), sim.grid().neighborCounts().data(),
+                             p.surface_distance.data(), out.data()};
 
-  // N_max is taken per size class: the classes have different neighbour counts by design (x_SMALL
-  // 50, x_LARGE 20, table 3.2), and one global maximum would make every LARGE particle look
-  // "isolated" next to SMALL ones, so splitting would creep inwards step after step.
-  float max_pressure = 0.0f;
-  float max_distance = 0.0f;
-  std::uint32_t max_neighbors_small = 0;
-  std::uint32_t max_neighbors_large = 0;
-#pragma omp parallel for schedule(static) \
-    reduction(max : max_pressure, max_distance, max_neighbors_small, max_neighbors_large)
-  for (std::size_t i = 0; i < n; ++i) {
-    float d = p.surface_hop[i];
-    if (p.normal_length[i] >= surface_threshold) {
-      d = 0.0f;  // a surface particle, (3.44)
-    } else if (config.surface_includes_walls) {
-      d = std::min(d, boundaryDistance(p.position[i], box, boundary));
-    }
-    p.surface_distance[i] = d;
-    if (d < inf) max_distance = std::max(max_distance, d);
-    max_pressure = std::max(max_pressure, p.pressure[i]);
-    if (p.size_class[i] == SizeClass::Small) {
-      max_neighbors_small = std::max(max_neighbors_small, grid.neighborCount(i));
-    } else {
-      max_neighbors_large = std::max(max_neighbors_large, grid.neighborCount(i));
-    }
-  }
-
-  // Character field, eq. (3.45), and the decision, eq. (3.46). Particles the distance field has
-  // not reached yet are deeper than every reached one: they take d = dmax.
+  // Character field, eq. (3.45), and the decision, eq. (3.46). N_max is taken per size class: the
+  // classes have different neighbour counts by design (x_SMALL 50, x_LARGE 20, table 3.2), and one
+  // global maximum would make every LARGE particle look "isolated" next to SMALL ones, so splitting
+  // would creep inwards step after step. Particles the distance field has not reached yet are
+  // deeper than every reached one: they take d = dmax.
   const float alpha = static_cast<float>(config.alpha);
   const float beta = static_cast<float>(config.beta);
   const float gamma = static_cast<float>(config.gamma);
   const float inv_weights = 1.0f / (alpha + beta + gamma);
   const auto inverse = [](float v) { return v > 0.0f ? 1.0f / v : 0.0f; };
-  const float inv_dmax = inverse(max_distance);
-  const float inv_fmax = inverse(max_pressure);
-  const float inv_nmax[kSizeClassCount] = {inverse(static_cast<float>(max_neighbors_small)),
-                                           inverse(static_cast<float>(max_neighbors_large))};
   const float split_below = static_cast<float>(config.threshold);
   const float merge_from = 2.0f * split_below;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const float d = std::min(p.surface_distance[i], max_distance);
-    const float f = std::max(p.pressure[i], 0.0f);
-    const float cf = (alpha * d * inv_dmax + beta * (1.0f - f * inv_fmax) +
-                      gamma * static_cast<float>(grid.neighborCount(i)) *
-                          inv_nmax[classIndex(p.size_class[i])]) *
-                     inv_weights;
-    out[i] = cf < split_below ? kSplit : (cf >= merge_from ? kMerge : kRemain);
+
+  FieldMaxima all;
+  int split_wanted = 0;
+  int merge_wanted = 0;
+  // One parallel region, two passes: the maxima (combined in any order, max is exact) between.
+#pragma omp parallel reduction(+ : split_wanted, merge_wanted)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t begin = n * t / team;
+    const std::size_t end = n * (t + 1) / team;
+    const FieldMaxima mine =
+        obstacles ? surfaceDistances<true>(arrays, begin, end, surface_threshold, config.surface_includes_walls, box, boundary)
+                  : surfaceDistances<false>(arrays, begin, end, surface_threshold, config.surface_includes_walls, box, boundary);
+#pragma omp critical(sph_surface_maxima)
+    {
+      all.pressure = std::max(all.pressure, mine.pressure);
+      all.distance = std::max(all.distance, mine.distance);
+      for (int c = 0; c < kSizeClassCount; ++c) all.neighbors[c] = std::max(all.neighbors[c], mine.neighbors[c]);
+    }
+#pragma omp barrier
+    const float max_distance = all.distance;
+    const float inv_dmax = inverse(all.distance);
+    const float inv_fmax = inverse(all.pressure);
+    const float inv_nmax[kSizeClassCount] = {inverse(static_cast<float>(all.neighbors[0])),
+                                             inverse(static_cast<float>(all.neighbors[1]))};
+    const SurfaceArrays a = arrays;
+    for (std::size_t i = begin; i < end; ++i) {
+      const float d = std::min(a.distance[i], max_distance);
+      const float f = std::max(a.pressure[i], 0.0f);
+      const int large = classIndex(a.size_class[i]);  // 0 SMALL, 1 LARGE
+      const float cf = (alpha * d * inv_dmax + beta * (1.0f - f * inv_fmax) +
+                        gamma * static_cast<float>(a.neighbors[i]) * inv_nmax[large]) *
+                       inv_weights;
+      const int split = cf < split_below;
+      const int merge = cf >= merge_from;
+      a.out[i] = static_cast<std::int8_t>(split * kSplit + merge * kMerge);  // both cannot hold
+      split_wanted += split & large;
+      merge_wanted += merge & (1 - large);
+    }
   }
+  return {split_wanted, merge_wanted};
 }
 
 namespace {
@@ -115,9 +177,17 @@ struct GazeCircle {
 
 // Particles [begin, end): single precision, no branches and restrict-qualified arrays (the
 // decisions are bytes, which may otherwise alias anything), so that GCC vectorises the loop.
-void decideGazeRange(const GazeCircle& shared, const float* __restrict xyz, const float* __restrict radius,
-                     std::int8_t* __restrict out, std::size_t begin, std::size_t end, bool hybrid) {
+DecisionCounts decideGazeRange(const GazeCircle& shared, const float* __restrict xyz,
+                               const float* __restrict radius, const SizeClass* __restrict size_class,
+                               std::int8_t* __restrict out, std::size_t begin, std::size_t end, bool hybrid) {
   const GazeCircle gaze = shared;
+  int split_wanted = 0;
+  int merge_wanted = 0;
+  const auto count = [&](std::int8_t decision, SizeClass c) {
+    const int large = classIndex(c);  // 0 SMALL, 1 LARGE
+    split_wanted += (decision == kSplit) & large;
+    merge_wanted += (decision == kMerge) & (1 - large);
+  };
   if (hybrid) {
     for (std::size_t i = begin; i < end; ++i) {
       const std::int8_t by_gaze = gaze.decide(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], radius[i]);
@@ -125,19 +195,22 @@ void decideGazeRange(const GazeCircle& shared, const float* __restrict xyz, cons
       out[i] = (by_gaze == kSplit && by_surface == kSplit)   ? kSplit
                : (by_gaze == kMerge || by_surface == kMerge) ? kMerge
                                                              : kRemain;
+      count(out[i], size_class[i]);
     }
   } else {
     for (std::size_t i = begin; i < end; ++i) {
       out[i] = gaze.decide(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], radius[i]);
+      count(out[i], size_class[i]);
     }
   }
+  return {split_wanted, merge_wanted};
 }
 
 }  // namespace
 
-void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
-                  double gaze_y, const AdaptiveConfig& config, bool hybrid,
-                  std::span<std::int8_t> out) {
+DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
+                            double gaze_y, const AdaptiveConfig& config, bool hybrid,
+                            std::span<std::int8_t> out) {
   const Projector projector(camera);
   const GazeCircle gaze{projector.fast(),
                         static_cast<float>(gaze_x),
@@ -148,12 +221,18 @@ void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, doub
   const float* xyz = particles.position.data()->data();  // packed x, y, z
   const float* radius = particles.radius.data();
   const std::size_t n = particles.size();
-#pragma omp parallel
+  int split_wanted = 0;
+  int merge_wanted = 0;
+#pragma omp parallel reduction(+ : split_wanted, merge_wanted)
   {
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    decideGazeRange(gaze, xyz, radius, out.data(), n * t / team, n * (t + 1) / team, hybrid);
+    const DecisionCounts mine = decideGazeRange(gaze, xyz, radius, particles.size_class.data(), out.data(),
+                                                n * t / team, n * (t + 1) / team, hybrid);
+    split_wanted += mine.split_wanted;
+    merge_wanted += mine.merge_wanted;
   }
+  return {split_wanted, merge_wanted};
 }
 
 }  // namespace sph

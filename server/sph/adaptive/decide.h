@@ -15,6 +15,12 @@ namespace sph {
 
 enum Decision : std::int8_t { kRemain = 0, kSplit = 1, kMerge = 2 };
 
+// What the decisions ask for: LARGE particles flagged SPLIT, SMALL ones flagged MERGE.
+struct DecisionCounts {
+  int split_wanted = 0;
+  int merge_wanted = 0;
+};
+
 // Surface based, eqs. (3.44)-(3.46): the character field from the distance to the surface (or a
 // boundary), the pressure and the neighbour count. Uses the neighbour lists and |n| of the step
 // that just ran, and updates the particles' surface_distance: d_i = 0 on the surface, else the
@@ -22,15 +28,16 @@ enum Decision : std::int8_t { kRemain = 0, kSplit = 1, kMerge = 2 };
 // distance, computed in the force loop). The field thus advances one hop per step, which keeps up
 // with the fluid (it moves well under a support radius per step) at the cost of one min per pair,
 // where recomputing it from scratch took 40 % of a step.
-void decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out);
+DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out);
 
 // Eye-tracking based, eqs. (3.47)-(3.48), with a hysteresis ring: SPLIT where the projected particle
 // overlaps the gaze circle, MERGE where it lies wholly outside the ring (or behind the eye), REMAIN
 // in the ring. With `hybrid`, `out` holds the surface decisions on entry and receives the hybrid
 // rule: SPLIT only where both ask for it, MERGE where either does, else REMAIN (one pass, so the
-// hybrid method costs no more than gaze and surface together).
-void decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
-                  double gaze_y, const AdaptiveConfig& config, bool hybrid,
-                  std::span<std::int8_t> out);
+// hybrid method costs no more than gaze and surface together). Both return the counts of the
+// decisions they leave in `out`.
+DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
+                            double gaze_y, const AdaptiveConfig& config, bool hybrid,
+                            std::span<std::int8_t> out);
 
 }  // namespace sph
