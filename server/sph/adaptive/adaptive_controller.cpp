@@ -97,7 +97,7 @@ void AdaptiveController::apply(Simulation& sim) {
   } else {
     std::fill(partner_.begin(), partner_.end(), -1);
   }
-  const SplitMergeCounts counts = applySplitMerge(sim, decision_, partner_, keep_, split_slot_);
+  const SplitMergeCounts counts = applySplitMerge(sim, decision_, partner_, keep_, split_list_);
   stats_.splits = counts.splits;
   stats_.merges = counts.merges;
   stats_.gaze_mode = mode;

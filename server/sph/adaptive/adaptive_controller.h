@@ -57,7 +57,7 @@ class AdaptiveController : public AdaptiveStep {
   std::vector<std::int8_t> decision_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint8_t> keep_;
-  std::vector<std::uint32_t> split_slot_;
+  std::vector<std::uint32_t> split_list_;
   StragglerScratch stragglers_;
 };
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 #include "sph/adaptive/decide.h"
 #include "sph/collision.h"
 #include "sph/hashed_direction.h"
@@ -68,15 +70,34 @@ void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
 
 void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, float max_distance, StragglerScratch& scratch) {
-  // Branch-free: whether a particle is a straggler follows no pattern a branch predictor could
-  // learn, and this serial scan touches every particle.
+  // Each thread lists the stragglers of its contiguous index range at the start of that range
+  // (branch-free: whether a particle is a straggler follows no pattern a predictor could learn);
+  // the ranges are then closed up in thread order, so the list is in index order whatever the
+  // thread count.
   const std::size_t n = p.size();
   std::vector<std::uint32_t>& lonely = scratch.lonely;
   if (lonely.size() < n) lonely.resize(n);
+  std::vector<std::size_t>& ranges = scratch.ranges;  // per thread: begin, count
+  ranges.assign(2 * static_cast<std::size_t>(omp_get_max_threads()), 0);
+#pragma omp parallel
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t begin = n * t / team;
+    const std::size_t end = n * (t + 1) / team;
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      lonely[begin + count] = static_cast<std::uint32_t>(i);
+      count += (partner[i] < 0) & (decision[i] == kMerge) & (p.size_class[i] == SizeClass::Small);
+    }
+    ranges[2 * t] = begin;
+    ranges[2 * t + 1] = count;
+  }
   std::size_t found = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    lonely[found] = static_cast<std::uint32_t>(i);
-    found += (partner[i] < 0) & (decision[i] == kMerge) & (p.size_class[i] == SizeClass::Small);
+  for (std::size_t t = 0; 2 * t < ranges.size(); ++t) {
+    std::copy_n(lonely.begin() + static_cast<std::ptrdiff_t>(ranges[2 * t]), ranges[2 * t + 1],
+                lonely.begin() + static_cast<std::ptrdiff_t>(found));
+    found += ranges[2 * t + 1];
   }
   // The pairing below is serial: a spray of thousands of isolated droplets must not stall the
   // step, so at most this many (the lowest indices, deterministically) pair per step.
@@ -123,7 +144,7 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
                                  std::span<const std::int32_t> partner,
                                  std::vector<std::uint8_t>& keep,
-                                 std::vector<std::uint32_t>& split_slot) {
+                                 std::vector<std::uint32_t>& split_list) {
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   const auto props = sim.params().classes();
@@ -133,13 +154,15 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   const Boundary& boundary = sim.scene().boundary;
   SplitMergeCounts counts;
 
-  // Slots for the second children: a serial prefix count keeps them in index order, so the layout
-  // (and every later sum) is the same for any thread count.
-  split_slot.resize(n);
+  // The particles that split, in index order (a serial, branch-free scan): the k-th one's second
+  // child takes slot k after the current end, so the layout (and every later sum) is the same for
+  // any thread count.
+  std::vector<std::uint32_t>& splitting = split_list;
+  splitting.resize(n);
   std::uint32_t splits = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    split_slot[i] = splits;
-    splits += (decision[i] == kSplit) & (p.size_class[i] == SizeClass::Large);  // branch-free
+    splitting[splits] = static_cast<std::uint32_t>(i);
+    splits += (decision[i] == kSplit) & (p.size_class[i] == SizeClass::Large);
   }
   const std::size_t first_child = p.appendZeroed(splits);
   counts.splits = static_cast<int>(splits);
@@ -155,10 +178,11 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   // children sit at +- half the parent radius along the split direction, so the centre of mass
   // stays put and the pair spacing is close to the SMALL lattice spacing.
   if (splits > 0) {
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (decision[i] != kSplit || p.size_class[i] != SizeClass::Large) continue;
-      const std::size_t c = first_child + split_slot[i];
+    // Only the splitting particles, in small chunks: they cluster in index ranges.
+#pragma omp parallel for schedule(dynamic, 32)
+    for (std::uint32_t slot = 0; slot < splits; ++slot) {
+      const std::size_t i = splitting[slot];
+      const std::size_t c = first_child + slot;
       const Vec3 centre = p.position[i];
       const Vec3 dir = splitDirection(p.id[i]);
       const float reach = symmetricReach(centre, dir, box, small_radius, 0.5f * p.radius[i]);
