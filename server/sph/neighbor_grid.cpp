@@ -1,10 +1,13 @@
 #include "sph/neighbor_grid.h"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 #if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
 #include <cmath>
+#include <omp.h>
 #include <stdexcept>
 #include <string>
 
@@ -85,6 +88,10 @@ void NeighborGrid::build(const ParticleSet& particles) {
   const std::size_t n = particles.size();
   for (;;) {
     if (neighbor_index_.size() < n * stride_) neighbor_index_.resize(n * stride_);
+    group_scratch_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+    for (auto& scratch : group_scratch_) {
+      if (scratch.size() < (kMaxGroup - 1) * (stride_ + 16)) scratch.resize((kMaxGroup - 1) * (stride_ + 16));
+    }
     std::uint32_t max_count = 0;
     // Blocks of particles taken by whichever thread is free: the cost per particle varies with its
     // class and neighbour count, and adaptive runs keep the SMALL ones (the costly ones) together
@@ -98,19 +105,43 @@ void NeighborGrid::build(const ParticleSet& particles) {
       std::size_t cursor = begin * stride_;
       const std::size_t region_end = end * stride_;
       CandidateRows rows;
-      for (std::size_t i = begin; i < end; ++i) {
-        // Particles in cell order (the arrays are re-sorted every few steps) come in runs that
-        // share one cell and so one set of candidate rows.
-        if (i == begin || particle_cell_[i] != particle_cell_[i - 1]) rows = candidateRows(particle_cell_[i]);
-        const std::uint32_t count = scanCandidates(rows, particles.position[i], particles.support[i],
-                                                   static_cast<std::uint32_t>(i), neighbor_index_.data() + cursor,
-                                                   region_end - cursor);
+      std::uint32_t* scratch = group_scratch_[static_cast<std::size_t>(omp_get_thread_num())].data();
+      const std::size_t scratch_room = stride_ + 16;
+      // A list keeps at most stride - 1 entries, so the ones before i used at most
+      // (i - begin) (stride - 1) slots and list i always has stride slots left in the range.
+      const auto place = [&](std::size_t i, std::uint32_t count) {
         max_count = std::max(max_count, count);
-        // A list keeps at most stride - 1 entries, so the ones before i used at most
-        // (i - begin) (stride - 1) slots and list i always has stride slots left in the range.
         neighbor_count_[i] = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(stride_ - 1));
         neighbor_start_[i] = cursor;
         cursor += neighbor_count_[i];
+      };
+      // The lists of a group after its first wait in scratch until the ones before are placed.
+      const auto placeGroup = [&](std::size_t i, const auto& counts) {
+        place(i, counts[0]);
+        for (std::size_t g = 1; g < counts.size(); ++g) {
+          std::copy_n(scratch + (g - 1) * scratch_room,
+                      std::min<std::uint32_t>(counts[g], static_cast<std::uint32_t>(stride_ - 1)),
+                      neighbor_index_.data() + cursor);
+          place(i + g, counts[g]);
+        }
+      };
+      for (std::size_t i = begin; i < end;) {
+        // Particles in cell order (the arrays are re-sorted every few steps) come in runs that
+        // share one cell and so one set of candidate rows; up to kMaxGroup of them scan together.
+        const std::uint32_t cell = particle_cell_[i];
+        rows = candidateRows(cell);
+        std::size_t run = 1;
+        while (run < kMaxGroup && i + run < end && particle_cell_[i + run] == cell) ++run;
+        const auto first = static_cast<std::uint32_t>(i);
+        std::uint32_t* out = neighbor_index_.data() + cursor;
+        const std::size_t room = region_end - cursor;
+        static_assert(kMaxGroup == 2, "the dispatch below knows groups of 1 and 2");
+        if (run == 1) {
+          placeGroup(i, scanCandidateGroup<1>(rows, particles, first, out, room, scratch, scratch_room));
+        } else {
+          placeGroup(i, scanCandidateGroup<2>(rows, particles, first, out, room, scratch, scratch_room));
+        }
+        i += run;
       }
     }
     // The last slot is scratch for the branch-free writes, so a full list must stay below it.
@@ -142,52 +173,101 @@ NeighborGrid::CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) cons
 }
 
 #if defined(__AVX512F__) && !defined(SPH_SCALAR_NEIGHBORS)
-std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi,
-                                           std::uint32_t self, std::uint32_t* out, std::size_t room) const {
-  // 16 candidates at a time; compress-store keeps the accepted ones in candidate order, so the
-  // lists are the same as the scalar loop's (and the same for any thread count).
-  const __m512 px = _mm512_set1_ps(pi.x());
-  const __m512 py = _mm512_set1_ps(pi.y());
-  const __m512 pz = _mm512_set1_ps(pi.z());
-  const __m512 half_hi = _mm512_set1_ps(0.5f * hi);
-  const __m512 half = _mm512_set1_ps(0.5f);
-  const __m512i self_v = _mm512_set1_epi32(static_cast<int>(self));
-  const auto capacity = static_cast<std::uint32_t>(stride_ - 1);
+namespace {
+
+// One particle whose list a scan writes: its centre and half support in all 16 lanes, where its
+// list goes, and how many candidates it has accepted so far.
+struct ScanTarget {
+  __m512 px, py, pz, half_h;
+  __m512i self;
+  std::uint32_t* out;
+  std::size_t room;  // slots from `out` that belong to the particle's block (or scratch)
   std::uint32_t count = 0;
-  for (int r = 0; r < rows.count; ++r) {
-    for (std::uint32_t k = rows.begin[r]; k < rows.end[r]; k += 16) {
-      const std::uint32_t left = rows.end[r] - k;
+
+  ScanTarget(const Vec3& p, float h, std::uint32_t index, std::uint32_t* list, std::size_t slots)
+      : px(_mm512_set1_ps(p.x())),
+        py(_mm512_set1_ps(p.y())),
+        pz(_mm512_set1_ps(p.z())),
+        half_h(_mm512_set1_ps(0.5f * h)),
+        self(_mm512_set1_epi32(static_cast<int>(index))),
+        out(list),
+        room(slots) {}
+
+  // Appends the candidates of one batch (x, y, z, half support, index on the live lanes) within
+  // reach, eq. (3.34), in candidate order. Compress in a register and store all 16 lanes while
+  // the range has room for them (a compress-store straight to memory is several times slower on
+  // current cores; the lanes past the list land where the next list will be written); near the
+  // end of the range store only the accepted lanes, so no write leaves it. Past `capacity` the
+  // writes stop but the count still grows (build() then regrows the stride).
+  void accept(__mmask16 live, __m512 x, __m512 y, __m512 z, __m512 half_hj, __m512i j, std::uint32_t capacity) {
+    const __m512 dx = _mm512_sub_ps(x, px);
+    const __m512 dy = _mm512_sub_ps(y, py);
+    const __m512 dz = _mm512_sub_ps(z, pz);
+    const __m512 reach = _mm512_add_ps(half_h, half_hj);
+    const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
+    const __mmask16 accepted_lanes =
+        _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) & _mm512_cmpneq_epi32_mask(j, self);
+    const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accepted_lanes));
+    if (count + 16 <= room) {
+      _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accepted_lanes, j));
+    } else if (count + accepted <= capacity) {
+      alignas(64) std::uint32_t lanes[16];
+      _mm512_store_si512(lanes, _mm512_maskz_compress_epi32(accepted_lanes, j));
+      for (std::uint32_t a = 0; a < accepted; ++a) out[count + a] = lanes[a];
+    }
+    count += accepted;
+  }
+};
+
+// Walks the candidate rows 16 at a time and offers each batch to every target: particles of one
+// cell share their candidates, so a group of them loads each batch once, and their independent
+// count chains overlap.
+template <std::size_t kTargets>
+void scanRows(const std::uint32_t* row_begin, const std::uint32_t* row_end, int rows, const float* sx,
+              const float* sy, const float* sz, const float* support, const std::uint32_t* index,
+              std::array<ScanTarget, kTargets>& targets, std::uint32_t capacity) {
+  const __m512 half = _mm512_set1_ps(0.5f);
+  for (int r = 0; r < rows; ++r) {
+    for (std::uint32_t k = row_begin[r]; k < row_end[r]; k += 16) {
+      const std::uint32_t left = row_end[r] - k;
       const __mmask16 live = left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
-      const __m512 dx = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_x_.data() + k), px);
-      const __m512 dy = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_y_.data() + k), py);
-      const __m512 dz = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, sorted_z_.data() + k), pz);
-      // reach = (hi + hj) / 2, eq. (3.34)
-      const __m512 reach =
-          _mm512_fmadd_ps(_mm512_maskz_loadu_ps(live, sorted_support_.data() + k), half, half_hi);
-      const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
-      const __m512i j = _mm512_maskz_loadu_epi32(live, cell_particles_.data() + k);
-      const __mmask16 accept = _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) &
-                               _mm512_cmpneq_epi32_mask(j, self_v);
-      const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accept));
-      // Compress in a register and store all 16 lanes while the block's range has room for them
-      // (a compress-store straight to memory is several times slower on current cores; the lanes
-      // past the list land where the next list will be written); near the end of the range
-      // store only the accepted lanes, so no write reaches another block's range.
-      if (count + 16 <= room) {
-        _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accept, j));
-      } else if (count + accepted <= capacity) {
-        alignas(64) std::uint32_t lanes[16];
-        _mm512_store_si512(lanes, _mm512_maskz_compress_epi32(accept, j));
-        for (std::uint32_t a = 0; a < accepted; ++a) out[count + a] = lanes[a];
-      }
-      count += accepted;
+      const __m512 x = _mm512_maskz_loadu_ps(live, sx + k);
+      const __m512 y = _mm512_maskz_loadu_ps(live, sy + k);
+      const __m512 z = _mm512_maskz_loadu_ps(live, sz + k);
+      const __m512 half_hj = _mm512_mul_ps(_mm512_maskz_loadu_ps(live, support + k), half);
+      const __m512i j = _mm512_maskz_loadu_epi32(live, index + k);
+      for (ScanTarget& t : targets) t.accept(live, x, y, z, half_hj, j, capacity);
     }
   }
-  return count;
+}
+
+}  // namespace
+
+template <std::size_t kGroup>
+std::array<std::uint32_t, kGroup> NeighborGrid::scanCandidateGroup(const CandidateRows& rows,
+                                                                   const ParticleSet& particles, std::uint32_t first,
+                                                                   std::uint32_t* out, std::size_t room,
+                                                                   std::uint32_t* scratch,
+                                                                   std::size_t scratch_room) const {
+  // Particle first writes its list in place, particle first + g (g > 0) to scratch slice g - 1.
+  const auto target = [&](std::size_t g) {
+    const std::uint32_t i = first + static_cast<std::uint32_t>(g);
+    return g == 0 ? ScanTarget(particles.position[i], particles.support[i], i, out, room)
+                  : ScanTarget(particles.position[i], particles.support[i], i, scratch + (g - 1) * scratch_room,
+                               scratch_room);
+  };
+  std::array<ScanTarget, kGroup> targets = [&]<std::size_t... g>(std::index_sequence<g...>) {
+    return std::array<ScanTarget, kGroup>{target(g)...};
+  }(std::make_index_sequence<kGroup>{});
+  scanRows(rows.begin, rows.end, rows.count, sorted_x_.data(), sorted_y_.data(), sorted_z_.data(),
+           sorted_support_.data(), cell_particles_.data(), targets, static_cast<std::uint32_t>(stride_ - 1));
+  std::array<std::uint32_t, kGroup> counts;
+  for (std::size_t g = 0; g < kGroup; ++g) counts[g] = targets[g].count;
+  return counts;
 }
 #else
 std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi,
-                                           std::uint32_t self, std::uint32_t* out, std::size_t /*room*/) const {
+                                           std::uint32_t self, std::uint32_t* out) const {
   const auto last_slot = static_cast<std::uint32_t>(stride_ - 1);
   std::uint32_t count = 0;
   for (int r = 0; r < rows.count; ++r) {
@@ -205,6 +285,21 @@ std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3
     }
   }
   return count;
+}
+
+template <std::size_t kGroup>
+std::array<std::uint32_t, kGroup> NeighborGrid::scanCandidateGroup(const CandidateRows& rows,
+                                                                   const ParticleSet& particles, std::uint32_t first,
+                                                                   std::uint32_t* out, std::size_t /*room*/,
+                                                                   std::uint32_t* scratch,
+                                                                   std::size_t scratch_room) const {
+  std::array<std::uint32_t, kGroup> counts;
+  for (std::size_t g = 0; g < kGroup; ++g) {
+    const std::uint32_t i = first + static_cast<std::uint32_t>(g);
+    counts[g] = scanCandidates(rows, particles.position[i], particles.support[i], i,
+                               g == 0 ? out : scratch + (g - 1) * scratch_room);
+  }
+  return counts;
 }
 #endif
 
