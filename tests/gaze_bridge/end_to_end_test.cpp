@@ -98,8 +98,15 @@ TEST(EndToEnd, PushSocketToPullServer) {
   params.source_id = "lab-gazepoint";
   BridgeThread bridge(context, std::make_unique<gaze_bridge::GazepointSource>(source), params);
   waitForAcks(tracker);
-  tracker.send(gazepointRecord(7.0, 0.33, 0.66, true));
-  auto s = receiver.receiveUntil([](const auto& g) { return g.valid(); });
+  // PUSH drops what it cannot hand to a connected peer (the bridge never blocks on a slow server),
+  // and on a loaded machine the connect may still be under way: resend until one arrives.
+  std::optional<gsph::v1::GazeSample> s;
+  double t = 7.0;
+  const auto end = std::chrono::steady_clock::now() + 10s;
+  while (!s && std::chrono::steady_clock::now() < end) {
+    tracker.send(gazepointRecord(t += 0.005, 0.33, 0.66, true));
+    s = receiver.receiveUntil([](const auto& g) { return g.valid(); }, 10ms);
+  }
   ASSERT_TRUE(s);
   EXPECT_NEAR(s->x(), 0.33, 1e-6);
   EXPECT_NEAR(s->y(), 0.66, 1e-6);
