@@ -29,14 +29,20 @@ sph::ParticleSet denseCloud() {
   return particles;
 }
 
-std::vector<std::vector<std::uint32_t>> listsWithThreads(const sph::ParticleSet& particles, int threads,
-                                                         std::size_t* stride_growths) {
+// A grid over the cloud's cube, cells of the largest support radius.
+sph::NeighborGrid cloudGrid(std::size_t capacity) {
   const auto classes = sph::thesisPreset().classes();
   sph::Aabb bounds;
   bounds.min = Eigen::Vector3d::Zero();
   bounds.max = Eigen::Vector3d::Constant(0.12);
   sph::NeighborGrid grid;
-  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), particles.size());
+  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), capacity);
+  return grid;
+}
+
+std::vector<std::vector<std::uint32_t>> listsWithThreads(const sph::ParticleSet& particles, int threads,
+                                                         std::size_t* stride_growths) {
+  sph::NeighborGrid grid = cloudGrid(particles.size());
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   grid.build(particles);
@@ -81,12 +87,7 @@ TEST(NeighborGrid, PackedListsAreExactForAnyThreadCount) {
 // candidate rows with the ones before them: the lists must stay exact there too.
 TEST(NeighborGrid, ListsAreExactForParticlesInCellOrder) {
   sph::ParticleSet p = denseCloud();
-  const auto classes = sph::thesisPreset().classes();
-  sph::Aabb bounds;
-  bounds.min = Eigen::Vector3d::Zero();
-  bounds.max = Eigen::Vector3d::Constant(0.12);
-  sph::NeighborGrid grid;
-  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), p.size());
+  sph::NeighborGrid grid = cloudGrid(p.size());
   grid.bin(p);
   const std::vector<std::uint32_t> order(grid.cellOrder().begin(), grid.cellOrder().end());
   p.permute(order);
