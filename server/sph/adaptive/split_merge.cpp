@@ -95,8 +95,11 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
   }
   std::size_t found = 0;
   for (std::size_t t = 0; 2 * t < ranges.size(); ++t) {
-    std::copy_n(lonely.begin() + static_cast<std::ptrdiff_t>(ranges[2 * t]), ranges[2 * t + 1],
-                lonely.begin() + static_cast<std::ptrdiff_t>(found));
+    // Moves down (found <= the range's start), so a forward copy is safe; none when in place.
+    if (ranges[2 * t] != found) {
+      std::copy_n(lonely.begin() + static_cast<std::ptrdiff_t>(ranges[2 * t]), ranges[2 * t + 1],
+                  lonely.begin() + static_cast<std::ptrdiff_t>(found));
+    }
     found += ranges[2 * t + 1];
   }
   // The pairing below is serial: a spray of thousands of isolated droplets must not stall the
