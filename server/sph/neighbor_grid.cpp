@@ -129,7 +129,7 @@ void NeighborGrid::build(const ParticleSet& particles) {
         // Particles in cell order (the arrays are re-sorted every few steps) come in runs that
         // share one cell and so one set of candidate rows; up to kMaxGroup of them scan together.
         const std::uint32_t cell = particle_cell_[i];
-        rows = candidateRows(cell);
+        if (i == begin || cell != particle_cell_[i - 1]) rows = candidateRows(cell);
         std::size_t run = 1;
         while (run < kMaxGroup && i + run < end && particle_cell_[i + run] == cell) ++run;
         const auto first = static_cast<std::uint32_t>(i);
