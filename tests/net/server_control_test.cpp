@@ -47,7 +47,11 @@ TEST(ServerControl, StatusDescribesTheServer) {
   EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_NONE);
   EXPECT_EQ(r.status().scene(), "tiny_pool");
   EXPECT_EQ(r.status().method(), gsph::v1::METHOD_GAZE);
-  EXPECT_EQ(r.status().particle_count(), 1000u);
+  // 1,000 LARGE at the start. No gaze has arrived, so the gaze method refines by the surface
+  // (the lost-gaze fallback): once a step has run, surface particles have split. How many steps
+  // run before this request is answered depends on the machine's load.
+  EXPECT_GE(r.status().particle_count(), 1000u);
+  EXPECT_LE(r.status().particle_count(), 2000u);
   EXPECT_FALSE(r.status().paused());
   const auto& scenes = r.status().scenes();
   EXPECT_NE(std::find(scenes.begin(), scenes.end(), "tiny_column"), scenes.end());
@@ -91,7 +95,11 @@ TEST(ServerControl, ResetRestartsTheScene) {
   const ControlReply r = run.request(reset);
   ASSERT_TRUE(r.ok());
   EXPECT_LT(r.status().step(), 20);
-  EXPECT_EQ(r.status().particle_count(), 1000u);
+  // 1,000 LARGE at the start. No gaze has arrived, so the gaze method refines by the surface
+  // (the lost-gaze fallback): once a step has run, surface particles have split. How many steps
+  // run before this request is answered depends on the machine's load.
+  EXPECT_GE(r.status().particle_count(), 1000u);
+  EXPECT_LE(r.status().particle_count(), 2000u);
 }
 
 TEST(ServerControl, LoadSceneByNameOnly) {
