@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include <omp.h>
+#include "sph/thread_share.h"
 
 namespace sph {
 
@@ -115,10 +115,9 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
   // One parallel region, two passes: the maxima (combined in any order, max is exact) between.
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted)
   {
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t begin = n * t / team;
-    const std::size_t end = n * (t + 1) / team;
+    const ThreadShare share = threadShare(n);
+    const std::size_t begin = share.begin;
+    const std::size_t end = share.end;
     const FieldMaxima mine =
         obstacles ? surfaceDistances<true>(arrays, begin, end, surface_threshold, config.surface_includes_walls, box, boundary)
                   : surfaceDistances<false>(arrays, begin, end, surface_threshold, config.surface_includes_walls, box, boundary);
@@ -225,10 +224,9 @@ DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& ca
   int merge_wanted = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted)
   {
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    const auto team = static_cast<std::size_t>(omp_get_num_threads());
+    const ThreadShare share = threadShare(n);
     const DecisionCounts mine = decideGazeRange(gaze, xyz, radius, particles.size_class.data(), out.data(),
-                                                n * t / team, n * (t + 1) / team, hybrid);
+                                                share.begin, share.end, hybrid);
     split_wanted += mine.split_wanted;
     merge_wanted += mine.merge_wanted;
   }

@@ -9,6 +9,7 @@
 #include "sph/adaptive/decide.h"
 #include "sph/collision.h"
 #include "sph/hashed_direction.h"
+#include "sph/thread_share.h"
 
 namespace sph {
 
@@ -81,17 +82,14 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
   ranges.assign(2 * static_cast<std::size_t>(omp_get_max_threads()), 0);
 #pragma omp parallel
   {
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    const auto team = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t begin = n * t / team;
-    const std::size_t end = n * (t + 1) / team;
+    const ThreadShare share = threadShare(n);
     std::size_t count = 0;
-    for (std::size_t i = begin; i < end; ++i) {
-      lonely[begin + count] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = share.begin; i < share.end; ++i) {
+      lonely[share.begin + count] = static_cast<std::uint32_t>(i);
       count += (partner[i] < 0) & (decision[i] == kMerge) & (p.size_class[i] == SizeClass::Small);
     }
-    ranges[2 * t] = begin;
-    ranges[2 * t + 1] = count;
+    ranges[2 * share.thread] = share.begin;
+    ranges[2 * share.thread + 1] = count;
   }
   std::size_t found = 0;
   for (std::size_t t = 0; 2 * t < ranges.size(); ++t) {

@@ -1,0 +1,25 @@
+// A thread's contiguous share of an index range, for parallel regions that split work by hand
+// (to vectorise over restrict-qualified arrays, or to gather per-thread lists that, joined in
+// thread order, follow index order whatever the thread count).
+#pragma once
+
+#include <cstddef>
+
+#include <omp.h>
+
+namespace sph {
+
+struct ThreadShare {
+  std::size_t thread;  // omp_get_thread_num()
+  std::size_t begin;   // [begin, end) of [0, n)
+  std::size_t end;
+};
+
+// Inside a parallel region: the calling thread's share of [0, n); thread t's comes before t + 1's.
+inline ThreadShare threadShare(std::size_t n) {
+  const auto t = static_cast<std::size_t>(omp_get_thread_num());
+  const auto team = static_cast<std::size_t>(omp_get_num_threads());
+  return {t, n * t / team, n * (t + 1) / team};
+}
+
+}  // namespace sph
