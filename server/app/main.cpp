@@ -12,6 +12,7 @@
 
 #include "app/server.h"
 #include "scene/scene_loader.h"
+#include "sph/omp_wait.h"
 
 namespace {
 
@@ -81,6 +82,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sph::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
   CLI::App cli{"sph_server: gaze-adaptive SPH water over ZeroMQ (frames PUB, gaze, camera pose, control)"};
   CliOptions o;
   addOptions(cli, o);

@@ -119,7 +119,9 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
         md += std::to_string(any->run.frames);
         md += " frames, ";
         md += std::to_string(any->run.threads);
-        md += " threads, preset ";
+        md += " threads (OpenMP wait: ";
+        md += any->run.omp_wait;
+        md += "), preset ";
         md += any->run.preset;
         md += ".\n";
       }

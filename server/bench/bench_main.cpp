@@ -13,6 +13,7 @@
 #include "bench/bench_output.h"
 #include "bench/bench_run.h"
 #include "scene/scene_loader.h"
+#include "sph/omp_wait.h"
 
 namespace {
 
@@ -29,6 +30,7 @@ std::vector<std::string> splitList(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sph::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
   CLI::App app{"sph_bench: run SPH scenes headless and report the thesis's measurements"};
   std::string scene_arg = "dambreak";
   std::string method_arg;

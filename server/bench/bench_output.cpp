@@ -63,6 +63,7 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["preset"] = run.preset;
   j["frames"] = run.frames;
   j["threads"] = run.threads;
+  j["omp_wait"] = run.omp_wait;
   j["phases"] = {{"neighbor_search", phaseJson(s.neighbor)},
                  {"density_pressure", phaseJson(s.density_pressure)},
                  {"accel_integrate_collide", phaseJson(s.accel_integrate_collide)},

@@ -2,6 +2,7 @@
 
 #include "bench/gaze_replay.h"
 #include "sph/camera.h"
+#include "sph/omp_wait.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,7 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   result_.preset = scene.params.preset;
   result_.frames = options.frames > 0 ? options.frames : scene.frames;
   result_.threads = options.threads;
+  result_.omp_wait = sph::ompWaitDescription();
   result_.mass_start = sim_->particles().totalMass();
   result_.records.reserve(result_.frames);
 }

@@ -15,6 +15,7 @@
 #include "bench/bench_run.h"
 #include "gaze/gaze_recording.h"
 #include "scene/scene_loader.h"
+#include "sph/omp_wait.h"
 #include "sph/simulation.h"
 
 namespace {
@@ -63,6 +64,18 @@ void BM_NeighborSearch(benchmark::State& state) {
 }
 BENCHMARK(BM_NeighborSearch)->Apply(stateArgs);
 
+void BM_Bin(benchmark::State& state) {
+  const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+  sph::NeighborGrid grid = sim.grid();
+  for (auto _ : state) {
+    grid.bin(sim.particles());
+    benchmark::ClobberMemory();
+  }
+  state.counters["cells"] = static_cast<double>(grid.cellCount());
+}
+BENCHMARK(BM_Bin)->Apply(stateArgs);
+
 using DensityStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&,
                               sph::ParticleSet&);
 using ForceStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&,
@@ -106,4 +119,11 @@ BENCHMARK(BM_FullStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  sph::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -105,12 +105,17 @@ TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   regular.summary.total.mean = 10.0;
   gaze_run.summary.total.mean = 4.0;
   gaze_run.summary.adaptive.mean = 0.2;
+  regular.run.frames = gaze_run.run.frames = 300;
+  regular.run.threads = gaze_run.run.threads = 2;
+  regular.run.omp_wait = gaze_run.run.omp_wait = "GOMP_SPINCOUNT=1000";
   const std::string md = bench::comparisonMarkdown({regular, gaze_run});
   EXPECT_NE(md.find("## dambreak"), std::string::npos) << md;
   EXPECT_NE(md.find("| phase | regular | gaze |"), std::string::npos) << md;
   EXPECT_NE(md.find("| **Total (ms)** | **10.000** | **4.000** |"), std::string::npos) << md;
   EXPECT_NE(md.find("| Total / regular | 1.00 | 0.40 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| Adaptive share of step | 0.0 % | 5.0 % |"), std::string::npos) << md;
+  // Timings mean little without how the threads waited for each other (sph/omp_wait.h).
+  EXPECT_NE(md.find("300 frames, 2 threads (OpenMP wait: GOMP_SPINCOUNT=1000)"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "net_test_util.h"
 
@@ -17,7 +19,9 @@ struct Child {
   int out_fd = -1;
   std::string output;
 
-  explicit Child(std::vector<std::string> args) {
+  // `environment`: variables to set in the child's environment, an empty value to unset one.
+  explicit Child(std::vector<std::string> args,
+                 const std::vector<std::pair<std::string, std::string>>& environment = {}) {
     int fds[2];
     if (::pipe(fds) != 0) return;
     pid = ::fork();
@@ -25,6 +29,13 @@ struct Child {
       ::dup2(fds[1], STDOUT_FILENO);
       ::dup2(fds[1], STDERR_FILENO);
       ::close(fds[0]);
+      for (const auto& [name, value] : environment) {
+        if (value.empty()) {
+          ::unsetenv(name.c_str());
+        } else {
+          ::setenv(name.c_str(), value.c_str(), 1);
+        }
+      }
       std::vector<char*> argv;
       for (auto& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
@@ -98,6 +109,38 @@ TEST(ServerBinary, HelpListsEveryEndpoint) {
                              "tcp://127.0.0.1:5555", "tcp://127.0.0.1:5558", "--camera-source", "--free-run"}) {
     EXPECT_NE(child.output.find(option), std::string::npos) << option;
   }
+}
+
+std::size_t countOf(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+// libgomp prints the wait it was loaded with when OMP_DISPLAY_ENV=VERBOSE: with no policy in the
+// environment the program re-executes itself once with the bounded spin (sph/omp_wait.h); a
+// policy the user gives is left alone and the program runs once.
+TEST(ServerBinary, WaitsWithABoundedSpinUnlessTheEnvironmentSaysOtherwise) {
+  const std::string spin_line = "GOMP_SPINCOUNT = '";
+  Child plain({SPH_SERVER_BINARY, "--help"},
+              {{"OMP_DISPLAY_ENV", "VERBOSE"}, {"OMP_WAIT_POLICY", ""}, {"GOMP_SPINCOUNT", ""}});
+  ASSERT_EQ(plain.waitExit(), 0) << plain.output;
+  // Two loads of libgomp (before and after the re-execution), the last with the bounded spin.
+  EXPECT_EQ(countOf(plain.output, spin_line), 2u) << plain.output;
+  EXPECT_EQ(plain.output.rfind(spin_line), plain.output.find(spin_line + "1000'")) << plain.output;
+  EXPECT_EQ(countOf(plain.output, "--frames-endpoint"), 1u) << "the help printed more than once";
+
+  Child active({SPH_SERVER_BINARY, "--help"},
+               {{"OMP_DISPLAY_ENV", "VERBOSE"}, {"OMP_WAIT_POLICY", "ACTIVE"}, {"GOMP_SPINCOUNT", ""}});
+  ASSERT_EQ(active.waitExit(), 0) << active.output;
+  EXPECT_EQ(countOf(active.output, spin_line), 1u) << active.output;
+  EXPECT_EQ(active.output.find(spin_line + "1000'"), std::string::npos) << active.output;
+
+  Child spin({SPH_SERVER_BINARY, "--help"},
+             {{"OMP_DISPLAY_ENV", "VERBOSE"}, {"OMP_WAIT_POLICY", ""}, {"GOMP_SPINCOUNT", "7"}});
+  ASSERT_EQ(spin.waitExit(), 0) << spin.output;
+  EXPECT_EQ(countOf(spin.output, spin_line), 1u) << spin.output;
+  EXPECT_NE(spin.output.find(spin_line + "7'"), std::string::npos) << spin.output;
 }
 
 TEST(ServerBinary, UnknownMethodIsAnError) {
