@@ -76,7 +76,8 @@ TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
 
   std::vector<std::int8_t> decision(n, sph::kMerge);
   std::vector<std::int32_t> partner(n, -1);
-  sph::choosePartners(p, sim.grid(), decision, partner);
+  sph::PartnerScratch partner_scratch;
+  sph::choosePartners(p, sim.grid(), decision, partner, partner_scratch);
   // Every particle is in at most one mutual pair.
   std::vector<int> pair_count(n, 0);
   int pairs = 0;
@@ -109,7 +110,8 @@ TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
   const std::size_t n = p.size();
   std::vector<std::int8_t> merge_all(n, sph::kMerge);
   std::vector<std::int32_t> partner(n, 0);
-  sph::choosePartners(p, sim.grid(), merge_all, partner);
+  sph::PartnerScratch partner_scratch;
+  sph::choosePartners(p, sim.grid(), merge_all, partner, partner_scratch);
   for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(partner[i], -1);
 
   std::vector<std::int8_t> split_all(n, sph::kSplit);
@@ -144,6 +146,38 @@ TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
   sph::computeDensityPressure(sim.params(), sim.kernels(), sim.grid(), sim.particles());
   const double after = meanDensity();
   EXPECT_LT(std::abs(after - before) / before, 0.05) << "before " << before << " after " << after;
+}
+
+// The AVX-512 search (16 neighbours at a time, each lane keeping its own best) must choose exactly
+// as the scalar one: on the water's lattice as filled (many equal distances, so the id decides),
+// then on a mixed set (LARGE particles, which never pair, among the SMALL ones); every fifth
+// particle does not want to merge.
+TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
+  if (!sph::partnerSearchVectorized()) GTEST_SKIP() << "built without AVX-512: one code path only";
+  sph::Simulation sim(poolScene(0.4, 0.4, 1200), sph::SizeClass::Small);
+  sph::ParticleSet& p = sim.particles();
+  for (int round = 0; round < 2; ++round) {
+    sim.rebuildNeighbors();
+    const std::size_t n = p.size();
+    std::vector<std::int8_t> decision(n, sph::kMerge);
+    for (std::size_t i = 0; i < n; i += 5) decision[i] = sph::kRemain;
+    std::vector<std::int32_t> vector_choice(n, 7), scalar_choice(n, 7);
+    sph::PartnerScratch scratch;
+    sph::choosePartners(p, sim.grid(), decision, vector_choice, scratch);
+    sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, scratch);
+    EXPECT_EQ(vector_choice, scalar_choice) << "round " << round;
+    std::size_t paired = 0;
+    for (std::int32_t c : scalar_choice) paired += c >= 0;
+    EXPECT_GT(paired, n / 2) << "round " << round;
+    // Merge the mutual pairs within the first third: round 2 searches a mixed set, LARGE
+    // particles among the SMALL ones.
+    std::vector<std::uint8_t> keep;
+    std::vector<std::uint32_t> slots;
+    std::vector<std::int32_t> merge_some(scalar_choice);
+    for (std::size_t i = n / 3; i < n; ++i) merge_some[i] = -1;
+    sph::applySplitMerge(sim, decision, merge_some, keep, slots);
+  }
+  EXPECT_GT(p.countOf(sph::SizeClass::Large), 0u);
 }
 
 TEST(SplitMerge, SplitDirectionIsAUnitVectorThatDependsOnTheId) {
@@ -184,7 +218,8 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   std::vector<std::int8_t> decision(n, sph::kRemain);
   decision[a] = decision[b] = decision[c] = sph::kMerge;
   std::vector<std::int32_t> partner(n, 0);
-  sph::choosePartners(p, sim.grid(), decision, partner);
+  sph::PartnerScratch partner_scratch;
+  sph::choosePartners(p, sim.grid(), decision, partner, partner_scratch);
   ASSERT_EQ(partner[a], -1) << "no merging neighbour within reach";
   ASSERT_EQ(partner[b], -1);
   sph::StragglerScratch scratch;

@@ -88,7 +88,7 @@ void AdaptiveController::apply(Simulation& sim) {
   stats_.split_wanted = wanted.split_wanted;
   stats_.merge_wanted = wanted.merge_wanted;
   if (wanted.merge_wanted > 0) {
-    choosePartners(p, sim.grid(), decision_, partner_);
+    choosePartners(p, sim.grid(), decision_, partner_, partner_scratch_);
     // Stragglers pair within two SMALL support radii: far enough to reach a sibling left behind
     // in LARGE water, near enough that the merged particle lands inside the water between them.
     const auto classes = sim.params().classes();

@@ -51,13 +51,14 @@ class AdaptiveController : public AdaptiveStep {
   ScreenCamera camera_;
   GazeInput gaze_;
   AdaptiveStats stats_;
-  // Scratch, sized once to the particle capacity (no allocation inside a step after the first).
   GazeMode gazeMode() const;
 
+  // Scratch, sized once to the particle capacity (no allocation inside a step after the first).
   std::vector<std::int8_t> decision_;
   std::vector<std::int32_t> partner_;
   std::vector<std::uint8_t> keep_;
   std::vector<std::uint32_t> split_list_;
+  PartnerScratch partner_scratch_;
   StragglerScratch stragglers_;
 };
 

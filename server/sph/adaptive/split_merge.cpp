@@ -43,32 +43,6 @@ void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float rad
 
 Vec3 splitDirection(std::uint32_t id) { return hashedUnitVector(id); }
 
-void choosePartners(const ParticleSet& p, const NeighborGrid& grid,
-                    std::span<const std::int8_t> decision, std::span<std::int32_t> partner) {
-  const std::size_t n = p.size();
-  // Only SMALL particles flagged MERGE search, and they sit together: chunks even out the threads.
-#pragma omp parallel for schedule(dynamic, kPairLoopChunk)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::int32_t best = -1;
-    if (decision[i] == kMerge && p.size_class[i] == SizeClass::Small) {
-      float best_d2 = std::numeric_limits<float>::infinity();
-      std::uint32_t best_id = 0;
-      const Vec3 xi = p.position[i];
-      // Candidates from the neighbour lists, i.e. within (hi + hj) / 2, eq. (3.34).
-      for (std::uint32_t j : grid.neighbors(i)) {
-        if (decision[j] != kMerge || p.size_class[j] != SizeClass::Small) continue;
-        const float d2 = (xi - p.position[j]).squaredNorm();
-        if (d2 < best_d2 || (d2 == best_d2 && p.id[j] < best_id)) {
-          best_d2 = d2;
-          best_id = p.id[j];
-          best = static_cast<std::int32_t>(j);
-        }
-      }
-    }
-    partner[i] = best;
-  }
-}
-
 void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, float max_distance, StragglerScratch& scratch) {
   // Each thread lists the stragglers of its contiguous index range at the start of that range

@@ -8,16 +8,10 @@
 #include <span>
 #include <vector>
 
+#include "sph/adaptive/partner_search.h"
 #include "sph/simulation.h"
 
 namespace sph {
-
-// For each SMALL particle flagged MERGE, its nearest SMALL neighbour also flagged MERGE (ties to the
-// lower id), or -1. Pairs are the mutual choices: partner[i] == j and partner[j] == i. Each particle
-// writes only its own entry, so no particle can be claimed by two pairs and the choice does not
-// depend on the thread count.
-void choosePartners(const ParticleSet& particles, const NeighborGrid& grid,
-                    std::span<const std::int8_t> decision, std::span<std::int32_t> partner);
 
 // Scratch of pairStragglers, kept between steps so the step does not allocate.
 struct StragglerScratch {
