@@ -96,7 +96,7 @@ void NeighborGrid::build(const ParticleSet& particles) {
     // Blocks of particles taken by whichever thread is free: the cost per particle varies with its
     // class and neighbour count, and adaptive runs keep the SMALL ones (the costly ones) together
     // at the end of the arrays, so fixed halves left one thread waiting for the other.
-    const std::size_t blocks = (n + kBlockSize - 1) / kBlockSize;
+    const std::size_t blocks = blockCount(n);
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : max_count)
     for (std::size_t b = 0; b < blocks; ++b) {
       const std::size_t begin = b * kBlockSize;

@@ -36,6 +36,12 @@ class NeighborGrid {
     return {neighbor_index_.data() + neighbor_start_[i], neighbor_count_[i]};
   }
   std::uint32_t neighborCount(std::size_t i) const { return neighbor_count_[i]; }
+
+  // Particles come in blocks of kBlockSize (the last one shorter) whose lists lie back to back:
+  // particle i + 1's list starts where i's ends when both are in one block. Block b holds
+  // particles [b kBlockSize, min(n, (b + 1) kBlockSize)).
+  static constexpr std::size_t kBlockSize = 256;
+  static std::size_t blockCount(std::size_t particles) { return (particles + kBlockSize - 1) / kBlockSize; }
   std::span<const std::uint32_t> neighborCounts() const { return neighbor_count_; }
 
   // Particle indices sorted by cell: the order to permute the particle arrays into.
@@ -90,8 +96,6 @@ class NeighborGrid {
   float inv_cell_size_ = 1.0f;
   int dims_[3] = {1, 1, 1};
   std::size_t stride_ = 96;
-  // Particles per block of the parallel list build; each block packs its own lists.
-  static constexpr std::size_t kBlockSize = 256;
   std::size_t stride_growths_ = 0;
 
   std::vector<std::uint32_t> cell_start_;      // cells + 1 offsets into cell_particles_

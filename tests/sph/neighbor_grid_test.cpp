@@ -97,4 +97,18 @@ TEST(NeighborGrid, ListsAreExactForParticlesInCellOrder) {
   EXPECT_EQ(listsWithThreads(p, 2, &growths), one);
 }
 
+// The vector pair loops stream a block's lists as one run of entries (fluid_stages_avx512.cpp):
+// within a block, particle i + 1's list must start where i's ends; the dense cloud regrows the
+// stride, so this holds after a rebuild too.
+TEST(NeighborGrid, ListsOfABlockLieBackToBack) {
+  const sph::ParticleSet p = denseCloud();
+  sph::NeighborGrid grid = cloudGrid(p.size());
+  grid.build(p);
+  ASSERT_GT(sph::NeighborGrid::blockCount(p.size()), 2u);
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    if ((i + 1) % sph::NeighborGrid::kBlockSize == 0) continue;  // the next block starts afresh
+    ASSERT_EQ(grid.neighbors(i + 1).data(), grid.neighbors(i).data() + grid.neighborCount(i)) << "particle " << i;
+  }
+}
+
 }  // namespace
