@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <limits>
-#include <span>
 
 #include "sph/coincident_pairs.h"
 #include "sph/fluid_stage_ends.h"
@@ -114,16 +113,13 @@ struct LaneCentre {
   }
 };
 
-// Neighbours b..b+15 of a list: which lanes are live, their indices, r = x_i - x_j and |r|^2.
+// 16 neighbour entries: which lanes are live, the neighbours j, r = x_i - x_j (x_i the lane
+// owner's centre) and |r|^2.
 struct PairBatch {
   __mmask16 live;
   __m512i j, j3;
   __m512 dx, dy, dz, r2;
 
-  PairBatch(std::span<const std::uint32_t> list, std::uint32_t b, const LaneCentre& c, const float* pos)
-      : PairBatch(liveLanes(static_cast<std::uint32_t>(list.size()) - b), list.data() + b, c, pos) {}
-
-  // The live lanes of the 16 indices at `indices`.
   PairBatch(__mmask16 live_lanes, const std::uint32_t* indices, const LaneCentre& c, const float* pos)
       : live(live_lanes),
         j(_mm512_maskz_loadu_epi32(live, indices)),
@@ -152,7 +148,8 @@ class SizeClassLanes {
   const LaneKernel& other(int class_index) const { return lanes_[1 - class_index]; }
   __m512 keyOf(std::size_t i) const { return _mm512_set1_ps(key_[i]); }
 
-  // Lanes whose neighbour is of the other class than i; `mj` is the neighbours' gathered mass.
+  // Lanes whose neighbour is of the other class than the lane's owner i; `mj` is the neighbours'
+  // gathered mass.
   __mmask16 mixed(const PairBatch& pair, __m512 mj, __m512 key_i) const {
     const __m512 key_j = key_ == mass_ ? mj : gather(pair.live, pair.j, key_);
     return _mm512_mask_cmp_ps_mask(pair.live, key_j, key_i, _CMP_NEQ_OQ);

@@ -1,7 +1,8 @@
 // AVX-512 forms of the two pair-sum stages of fluid_stages.h: 16 neighbours per instruction, the
-// neighbour attributes gathered by index. Each particle still sums its own neighbours in list
-// order (16 lane sums, then one fixed horizontal reduction), so the result does not depend on the
-// thread count. Internal to the library: callers use sph::computeDensityPressure and
+// neighbour attributes gathered by index, batches running on from one particle's list into the
+// next's. Each particle still sums its own neighbours in list order (lane sums, then one fixed
+// horizontal reduction) and which lanes they take depends only on the lists' layout, so the
+// result does not depend on the thread count. Internal to the library: callers use sph::computeDensityPressure and
 // sph::computeAccelerations, which pick this code where the build targets AVX-512.
 #pragma once
 
