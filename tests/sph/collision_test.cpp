@@ -4,8 +4,11 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <random>
 
 #include "sph/collision.h"
+#include "sph/fluid_stages.h"
+#include "sph/params.h"
 
 namespace {
 
@@ -132,6 +135,58 @@ TEST(CollideBox, NoContactLeavesParticleUnchanged) {
   EXPECT_FALSE(sph::collideBox(b, kR, x, u));
   EXPECT_EQ(x, x0);
   EXPECT_EQ(u, u0);
+}
+
+// integrateAndCollide's vectorised loop for a box without obstacles must move and clamp exactly as
+// the general loop (eqs. (3.21)-(3.22), then collideBox): particles of both classes crossing every
+// face, and fast enough to cross two at once, between moving walls. A sphere out of reach sends
+// the same particles through the general loop.
+TEST(IntegrateAndCollide, BareBoxLoopMatchesTheGeneralOne) {
+  const sph::SimParams params = sph::thesisPreset();
+  const auto classes = params.classes();
+  sph::BoxState box = unitBox();
+  box.min_velocity = Vec3(0.2f, 0.0f, -0.1f);
+  box.max_velocity = Vec3(-0.3f, 0.0f, 0.05f);
+  sph::ParticleSet particles(2000);
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<float> pos(-0.05f, 1.05f);
+  std::uniform_real_distribution<float> speed(-8.0f, 8.0f);
+  while (particles.size() < particles.capacity()) {
+    const sph::SizeClass c = particles.size() % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
+    const std::uint32_t k = particles.add(Vec3(pos(rng), pos(rng), pos(rng)), Vec3(speed(rng), speed(rng), speed(rng)), c,
+                                          classes[sph::classIndex(c)]);
+    particles.acceleration[k] = Vec3(speed(rng), speed(rng), speed(rng)) * 100.0f;
+  }
+  sph::ParticleSet expected = particles;
+  const float dt = static_cast<float>(params.time_step);
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    Vec3 u = expected.velocity[i] + dt * expected.acceleration[i];
+    Vec3 x = expected.position[i] + dt * u;
+    sph::collideBox(box, expected.radius[i], x, u);
+    expected.velocity[i] = u;
+    expected.position[i] = x;
+  }
+
+  sph::Boundary bare;
+  sph::ParticleSet fast = particles;
+  sph::integrateAndCollide(params, bare, box, fast);
+  sph::Boundary with_sphere;
+  with_sphere.spheres.push_back({Eigen::Vector3d(50.0, 50.0, 50.0), 0.1});
+  sph::ParticleSet general = particles;
+  sph::integrateAndCollide(params, with_sphere, box, general);
+
+  std::size_t clamped = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    EXPECT_EQ(fast.position[i], expected.position[i]) << "particle " << i;
+    EXPECT_EQ(fast.velocity[i], expected.velocity[i]) << "particle " << i;
+    EXPECT_EQ(general.position[i], expected.position[i]) << "particle " << i;
+    EXPECT_EQ(general.velocity[i], expected.velocity[i]) << "particle " << i;
+    for (int a = 0; a < 3; ++a) {
+      clamped += expected.position[i][a] == box.min[a] + expected.radius[i] ||
+                 expected.position[i][a] == box.max[a] - expected.radius[i];
+    }
+  }
+  EXPECT_GT(clamped, 300u) << "the particles should cross every face";
 }
 
 }  // namespace
