@@ -137,56 +137,90 @@ TEST(CollideBox, NoContactLeavesParticleUnchanged) {
   EXPECT_EQ(u, u0);
 }
 
-// integrateAndCollide's vectorised loop for a box without obstacles must move and clamp exactly as
-// the general loop (eqs. (3.21)-(3.22), then collideBox): particles of both classes crossing every
-// face, and fast enough to cross two at once, between moving walls. A sphere out of reach sends
-// the same particles through the general loop.
-TEST(IntegrateAndCollide, BareBoxLoopMatchesTheGeneralOne) {
-  const sph::SimParams params = sph::thesisPreset();
-  const auto classes = params.classes();
-  sph::BoxState box = unitBox();
-  box.min_velocity = Vec3(0.2f, 0.0f, -0.1f);
-  box.max_velocity = Vec3(-0.3f, 0.0f, 0.05f);
-  sph::ParticleSet particles(2000);
-  std::mt19937 rng(99);
-  std::uniform_real_distribution<float> pos(-0.05f, 1.05f);
-  std::uniform_real_distribution<float> speed(-8.0f, 8.0f);
-  while (particles.size() < particles.capacity()) {
-    const sph::SizeClass c = particles.size() % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
-    const std::uint32_t k = particles.add(Vec3(pos(rng), pos(rng), pos(rng)), Vec3(speed(rng), speed(rng), speed(rng)), c,
-                                          classes[sph::classIndex(c)]);
-    particles.acceleration[k] = Vec3(speed(rng), speed(rng), speed(rng)) * 100.0f;
-  }
-  sph::ParticleSet expected = particles;
-  const float dt = static_cast<float>(params.time_step);
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    Vec3 u = expected.velocity[i] + dt * expected.acceleration[i];
-    Vec3 x = expected.position[i] + dt * u;
-    sph::collideBox(box, expected.radius[i], x, u);
-    expected.velocity[i] = u;
-    expected.position[i] = x;
-  }
-
-  sph::Boundary bare;
-  sph::ParticleSet fast = particles;
-  sph::integrateAndCollide(params, bare, box, fast);
-  sph::Boundary with_sphere;
-  with_sphere.spheres.push_back({Eigen::Vector3d(50.0, 50.0, 50.0), 0.1});
-  sph::ParticleSet general = particles;
-  sph::integrateAndCollide(params, with_sphere, box, general);
-
-  std::size_t clamped = 0;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    EXPECT_EQ(fast.position[i], expected.position[i]) << "particle " << i;
-    EXPECT_EQ(fast.velocity[i], expected.velocity[i]) << "particle " << i;
-    EXPECT_EQ(general.position[i], expected.position[i]) << "particle " << i;
-    EXPECT_EQ(general.velocity[i], expected.velocity[i]) << "particle " << i;
-    for (int a = 0; a < 3; ++a) {
-      clamped += expected.position[i][a] == box.min[a] + expected.radius[i] ||
-                 expected.position[i][a] == box.max[a] - expected.radius[i];
+// integrateAndCollide (its vectorised loop for a bare box, its general loop otherwise) must move
+// and clamp exactly as eqs. (3.21)-(3.22) and the per-particle collision functions applied in
+// order (spheres, cylinders, box): particles of both classes crossing every face, fast enough to
+// cross two at once, between moving walls; with no obstacle, with one out of reach, and with a
+// sphere and two cylinders in the way (particles on the sphere's centre and a cylinder's axis).
+class IntegrateAndCollide : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto classes = params_.classes();
+    box_ = unitBox();
+    box_.min_velocity = Vec3(0.2f, 0.0f, -0.1f);
+    box_.max_velocity = Vec3(-0.3f, 0.0f, 0.05f);
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<float> pos(-0.05f, 1.05f);
+    std::uniform_real_distribution<float> speed(-8.0f, 8.0f);
+    while (particles_.size() < particles_.capacity()) {
+      const sph::SizeClass c = particles_.size() % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
+      const std::uint32_t k = particles_.add(Vec3(pos(rng), pos(rng), pos(rng)), Vec3(speed(rng), speed(rng), speed(rng)),
+                                             c, classes[sph::classIndex(c)]);
+      particles_.acceleration[k] = Vec3(speed(rng), speed(rng), speed(rng)) * 100.0f;
     }
+    // Two particles on the sphere's centre and one on a cylinder's axis (after this step's move).
+    for (std::size_t k : {0u, 1u}) place(k, Vec3(0.5f, 0.25f, 0.4f));
+    place(2, Vec3(0.2f, 0.3f, 0.2f));
   }
-  EXPECT_GT(clamped, 300u) << "the particles should cross every face";
+
+  // Puts particle k where it will be after the step's move (zero velocity and acceleration).
+  void place(std::size_t k, const Vec3& x) {
+    particles_.position[k] = x;
+    particles_.velocity[k] = Vec3::Zero();
+    particles_.acceleration[k] = Vec3::Zero();
+  }
+
+  // Returns how many particles the obstacles touched.
+  std::size_t expectStepAsPerParticleFunctions(const sph::Boundary& boundary) {
+    sph::ParticleSet expected = particles_;
+    const float dt = static_cast<float>(params_.time_step);
+    std::size_t touched = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      Vec3 u = expected.velocity[i] + dt * expected.acceleration[i];
+      Vec3 x = expected.position[i] + dt * u;
+      const float r = expected.radius[i];
+      bool touch = false;
+      for (const sph::Sphere& s : boundary.spheres) touch |= sph::collideSphere(s, r, x, u);
+      for (const sph::Cylinder& c : boundary.cylinders) touch |= sph::collideCylinder(c, r, x, u);
+      touched += touch;
+      sph::collideBox(box_, r, x, u);
+      expected.velocity[i] = u;
+      expected.position[i] = x;
+    }
+    sph::ParticleSet moved = particles_;
+    sph::integrateAndCollide(params_, boundary, box_, moved);
+    std::size_t clamped = 0;
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+      EXPECT_EQ(moved.position[i], expected.position[i]) << "particle " << i;
+      EXPECT_EQ(moved.velocity[i], expected.velocity[i]) << "particle " << i;
+      for (int a = 0; a < 3; ++a) {
+        clamped += expected.position[i][a] == box_.min[a] + expected.radius[i] ||
+                   expected.position[i][a] == box_.max[a] - expected.radius[i];
+      }
+    }
+    EXPECT_GT(clamped, 300u) << "the particles should cross every face";
+    return touched;
+  }
+
+  sph::SimParams params_ = sph::thesisPreset();
+  sph::BoxState box_;
+  sph::ParticleSet particles_{2000};
+};
+
+TEST_F(IntegrateAndCollide, BareBox) { expectStepAsPerParticleFunctions(sph::Boundary{}); }
+
+TEST_F(IntegrateAndCollide, ObstacleOutOfReach) {
+  sph::Boundary boundary;
+  boundary.spheres.push_back({Eigen::Vector3d(50.0, 50.0, 50.0), 0.1});
+  EXPECT_EQ(expectStepAsPerParticleFunctions(boundary), 0u);
+}
+
+TEST_F(IntegrateAndCollide, SphereAndCylindersInTheWay) {
+  sph::Boundary boundary;
+  boundary.spheres.push_back({Eigen::Vector3d(0.5, 0.25, 0.4), 0.15});
+  boundary.cylinders.push_back({0.2, 0.2, 0.05});
+  boundary.cylinders.push_back({0.8, 0.6, 0.08});
+  EXPECT_GT(expectStepAsPerParticleFunctions(boundary), 40u);
 }
 
 }  // namespace
