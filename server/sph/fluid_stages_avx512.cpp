@@ -237,7 +237,8 @@ class DensityStage {
     return {LaneCentre(pos_, i), classes_.keyOf(i), &classes_.own(ci), &classes_.other(ci)};
   }
   [[gnu::always_inline]] Owner blend(BatchLanes lanes, const Owner& a, const Owner& b) {
-    Owner o{LaneCentre::blend(lanes.b, a.centre, b.centre), _mm512_mask_blend_ps(lanes.b, a.key, b.key), a.own, a.other};
+    Owner o{LaneCentre::blend(lanes.b, a.centre, b.centre), _mm512_mask_blend_ps(lanes.b, a.key, b.key), a.own,
+            a.other};
     if (a.own != b.own) {
       blended_[0] = LaneKernel::blend(lanes.b, *a.own, *b.own);
       blended_[1] = LaneKernel::blend(lanes.b, *a.other, *b.other);
@@ -247,7 +248,8 @@ class DensityStage {
     return o;
   }
 
-  [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a, std::size_t b) {
+  [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a,
+                                   [[maybe_unused]] std::size_t b) {
     const PairBatch pair(lanes.a | lanes.b, indices, o.centre, pos_);
     __m512 w = poly6(*o.own, pair.r2);
     const __m512 mj = gather(pair.live, pair.j, mass_);  // dead lanes: mass 0, so they add nothing
@@ -257,7 +259,6 @@ class DensityStage {
     if (lanes.b) {
       finish(a);
       sum_ = _mm512_maskz_mul_ps(lanes.b, mj, w);
-      static_cast<void>(b);
     }
   }
 
@@ -333,7 +334,8 @@ class ForceStage {
     return o;
   }
 
-  [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a, std::size_t b) {
+  [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a,
+                                   std::size_t b) {
     const PairBatch pair(lanes.a | lanes.b, indices, o.centre, pos_);
     const __mmask16 live = pair.live;
     const __m512i j = pair.j;
@@ -376,7 +378,8 @@ class ForceStage {
   [[gnu::always_inline]] void finish(std::size_t i) {
     const int ci = classIndex(p_.size_class[i]);
     ForceSums sums;
-    sums.pressure_acc = contact_ - Vec3(_mm512_reduce_add_ps(pax_), _mm512_reduce_add_ps(pay_), _mm512_reduce_add_ps(paz_));
+    sums.pressure_acc =
+        contact_ - Vec3(_mm512_reduce_add_ps(pax_), _mm512_reduce_add_ps(pay_), _mm512_reduce_add_ps(paz_));
     sums.viscous = Vec3(_mm512_reduce_add_ps(vx_), _mm512_reduce_add_ps(vy_), _mm512_reduce_add_ps(vz_));
     sums.normal = Vec3(_mm512_reduce_add_ps(nx_), _mm512_reduce_add_ps(ny_), _mm512_reduce_add_ps(nz_));
     // The colour field sums over every j including i (3.16); only the Laplacian has a self term.

@@ -24,9 +24,16 @@ constexpr bool kPartnerSearchAvx512 = true;
 constexpr bool kPartnerSearchAvx512 = false;
 #endif
 
-// |a - b|^2 with explicit fused multiply-adds, so the scalar and the vector search round alike
-// (left to the compiler, contraction may differ between the two).
-inline float squaredDistance(float dx, float dy, float dz) { return std::fma(dz, dz, std::fma(dy, dy, dx * dx)); }
+// |a - b|^2. Where the CPU has FMA (every AVX-512 one does), with explicit fused multiply-adds,
+// so that the scalar and the vector search round alike (left to the compiler, contraction may
+// differ between the two); without it std::fma would be a library call per neighbour.
+inline float squaredDistance(float dx, float dy, float dz) {
+#if defined(__FMA__)
+  return std::fma(dz, dz, std::fma(dy, dy, dx * dx));
+#else
+  return dx * dx + dy * dy + dz * dz;
+#endif
+}
 
 // The nearest neighbour of particle i among those flagged in `merging` (candidates from the
 // neighbour list, i.e. within (hi + hj) / 2, eq. (3.34)): least squared distance, ties to the
@@ -55,8 +62,9 @@ std::int32_t nearestMergingNeighbour(const ParticleSet& p, std::span<const std::
 // and the lanes' bests are compared at the end: the least distance, then the lower id, the same
 // choice as the scalar search makes in list order. Only the candidate lanes gather positions and
 // ids, and most batches have none or few.
-std::int32_t nearestMergingNeighbourAvx512(const float* pos, const std::uint32_t* ids, std::span<const std::uint32_t> list,
-                                           const std::int32_t* merging, std::size_t i) {
+std::int32_t nearestMergingNeighbourAvx512(const float* pos, const std::uint32_t* ids,
+                                           std::span<const std::uint32_t> list, const std::int32_t* merging,
+                                           std::size_t i) {
   const __m512 xi = _mm512_set1_ps(pos[3 * i]);
   const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
   const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
@@ -91,7 +99,8 @@ std::int32_t nearestMergingNeighbourAvx512(const float* pos, const std::uint32_t
   const __mmask16 at_least = _mm512_cmp_ps_mask(best_d2, _mm512_set1_ps(least), _CMP_EQ_OQ);
   const __m512i ids_at_least = _mm512_mask_mov_epi32(_mm512_set1_epi32(-1), at_least, best_id);
   const auto lowest_id = static_cast<std::uint32_t>(_mm512_reduce_min_epu32(ids_at_least));
-  const __mmask16 winner = _mm512_mask_cmpeq_epi32_mask(at_least, ids_at_least, _mm512_set1_epi32(static_cast<int>(lowest_id)));
+  const __mmask16 winner =
+      _mm512_mask_cmpeq_epi32_mask(at_least, ids_at_least, _mm512_set1_epi32(static_cast<int>(lowest_id)));
   alignas(64) std::int32_t lanes[16];
   _mm512_store_si512(lanes, best_j);
   return lanes[__builtin_ctz(winner)];
@@ -122,7 +131,8 @@ void choosePartnersWith(const ParticleSet& p, const NeighborGrid& grid, std::spa
       }
 #if defined(__AVX512F__)
       if constexpr (kVector) {
-        partner[i] = nearestMergingNeighbourAvx512(p.position.data()->data(), p.id.data(), grid.neighbors(i), merging, i);
+        partner[i] =
+            nearestMergingNeighbourAvx512(p.position.data()->data(), p.id.data(), grid.neighbors(i), merging, i);
         continue;
       }
 #endif
