@@ -161,6 +161,27 @@ class SizeClassLanes {
   const float* key_;
 };
 
+// The own-class and other-class kernels of a batch's lane owners.
+struct OwnerKernels {
+  const LaneKernel* own;
+  const LaneKernel* other;
+};
+
+// Kernels for a batch that crosses from particle a's list into b's: a's where both are of one
+// class, else a lane-by-lane blend, kept here while the batch is summed.
+class KernelBlend {
+ public:
+  OwnerKernels of(__mmask16 b_lanes, OwnerKernels a, OwnerKernels b) {
+    if (a.own == b.own) return a;
+    blended_[0] = LaneKernel::blend(b_lanes, *a.own, *b.own);
+    blended_[1] = LaneKernel::blend(b_lanes, *a.other, *b.other);
+    return {&blended_[0], &blended_[1]};
+  }
+
+ private:
+  LaneKernel blended_[2];
+};
+
 // The lanes of one batch: which particle owns them. A batch holds the next 16 entries of a block's
 // lists (NeighborGrid: particle i + 1's list starts where i's ends), so where particle a's list
 // ends inside it, the rest of the batch takes the first entries of the next particle's, b.
@@ -219,8 +240,7 @@ class DensityStage {
   struct Owner {
     LaneCentre centre;
     __m512 key;
-    const LaneKernel* own;  // the class constants, or blend()'s (kept in the stage)
-    const LaneKernel* other;
+    OwnerKernels kernels;
   };
 
   DensityStage(const SimParams& params, const KernelTable& kernels, ParticleSet& p)
@@ -234,27 +254,20 @@ class DensityStage {
 
   [[gnu::always_inline]] Owner owner(std::size_t i) const {
     const int ci = classIndex(p_.size_class[i]);
-    return {LaneCentre(pos_, i), classes_.keyOf(i), &classes_.own(ci), &classes_.other(ci)};
+    return {LaneCentre(pos_, i), classes_.keyOf(i), {&classes_.own(ci), &classes_.other(ci)}};
   }
   [[gnu::always_inline]] Owner blend(BatchLanes lanes, const Owner& a, const Owner& b) {
-    Owner o{LaneCentre::blend(lanes.b, a.centre, b.centre), _mm512_mask_blend_ps(lanes.b, a.key, b.key), a.own,
-            a.other};
-    if (a.own != b.own) {
-      blended_[0] = LaneKernel::blend(lanes.b, *a.own, *b.own);
-      blended_[1] = LaneKernel::blend(lanes.b, *a.other, *b.other);
-      o.own = &blended_[0];
-      o.other = &blended_[1];
-    }
-    return o;
+    return {LaneCentre::blend(lanes.b, a.centre, b.centre), _mm512_mask_blend_ps(lanes.b, a.key, b.key),
+            kernel_blend_.of(lanes.b, a.kernels, b.kernels)};
   }
 
   [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a,
                                    [[maybe_unused]] std::size_t b) {
     const PairBatch pair(lanes.a | lanes.b, indices, o.centre, pos_);
-    __m512 w = poly6(*o.own, pair.r2);
+    __m512 w = poly6(*o.kernels.own, pair.r2);
     const __m512 mj = gather(pair.live, pair.j, mass_);  // dead lanes: mass 0, so they add nothing
     const __mmask16 mixed = classes_.mixed(pair, mj, o.key);
-    if (mixed) w = average(mixed, w, poly6(*o.other, pair.r2));
+    if (mixed) w = average(mixed, w, poly6(*o.kernels.other, pair.r2));
     sum_ = _mm512_mask3_fmadd_ps(mj, w, sum_, lanes.a);  // eq. (3.11)
     if (lanes.b) {
       finish(a);
@@ -275,7 +288,7 @@ class DensityStage {
   const float* pos_;
   const float* mass_;
   float rho0_, stiffness_;
-  LaneKernel blended_[2];  // own and other kernels of a batch of two particles of different classes
+  KernelBlend kernel_blend_;
   __m512 sum_ = _mm512_setzero_ps();
 };
 
@@ -285,8 +298,7 @@ class ForceStage {
   struct Owner {
     LaneCentre centre;
     __m512 ux, uy, uz, pressure_term, key;
-    const LaneKernel* own;  // the class constants, or blend()'s (kept in the stage)
-    const LaneKernel* other;
+    OwnerKernels kernels;
   };
 
   ForceStage(const SimParams& params, const KernelTable& kernels, ParticleSet& p, bool propagate_surface_distance)
@@ -312,26 +324,17 @@ class ForceStage {
             _mm512_set1_ps(vel_[3 * i + 2]),
             _mm512_set1_ps(pressure_term_[i]),
             classes_.keyOf(i),
-            &classes_.own(ci),
-            &classes_.other(ci)};
+            {&classes_.own(ci), &classes_.other(ci)}};
   }
   [[gnu::always_inline]] Owner blend(BatchLanes lanes, const Owner& a, const Owner& b) {
     const auto mix = [&](__m512 x, __m512 y) { return _mm512_mask_blend_ps(lanes.b, x, y); };
-    Owner o{LaneCentre::blend(lanes.b, a.centre, b.centre),
+    return {LaneCentre::blend(lanes.b, a.centre, b.centre),
             mix(a.ux, b.ux),
             mix(a.uy, b.uy),
             mix(a.uz, b.uz),
             mix(a.pressure_term, b.pressure_term),
             mix(a.key, b.key),
-            a.own,
-            a.other};
-    if (a.own != b.own) {
-      blended_[0] = LaneKernel::blend(lanes.b, *a.own, *b.own);
-      blended_[1] = LaneKernel::blend(lanes.b, *a.other, *b.other);
-      o.own = &blended_[0];
-      o.other = &blended_[1];
-    }
-    return o;
+            kernel_blend_.of(lanes.b, a.kernels, b.kernels)};
   }
 
   [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a,
@@ -343,13 +346,13 @@ class ForceStage {
     const __mmask16 coincident = _mm512_mask_cmp_ps_mask(live, r2, _mm512_setzero_ps(), _CMP_EQ_OQ);
     const __m512 inv_r = inverseLength(r2);
     const __m512 rl = r2 * inv_r;
-    PairKernels kern = forceKernels(*o.own, r2, rl, inv_r);
+    PairKernels kern = forceKernels(*o.kernels.own, r2, rl, inv_r);
     // Dead lanes gather mass and volume 0, so every term below is 0 there.
     const __m512 mj = gather(live, j, mass_);
     const __m512 volj = gather(live, j, volume_);
     const __mmask16 mixed = classes_.mixed(pair, mj, o.key);
     if (mixed) {
-      const PairKernels other = forceKernels(*o.other, r2, rl, inv_r);
+      const PairKernels other = forceKernels(*o.kernels.other, r2, rl, inv_r);
       kern = {average(mixed, kern.spiky, other.spiky), average(mixed, kern.visc, other.visc),
               average(mixed, kern.cgrad, other.cgrad), average(mixed, kern.clap, other.clap)};
     }
@@ -428,7 +431,7 @@ class ForceStage {
   ParticleSet& p_;
   const float *pos_, *vel_, *mass_, *volume_, *pressure_term_, *surface_distance_;
   const bool propagate_;
-  LaneKernel blended_[2];  // own and other kernels of a batch of two particles of different classes
+  KernelBlend kernel_blend_;
   __m512 pax_, pay_, paz_;  // f_pressure / rho_i, negated at the end
   __m512 vx_, vy_, vz_;     // f_viscosity / mu
   __m512 nx_, ny_, nz_;     // n = grad c, eq. (3.17)
