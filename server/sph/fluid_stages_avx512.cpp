@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "sph/avx512_lanes.h"
 #include "sph/coincident_pairs.h"
 #include "sph/fluid_stage_ends.h"
 
@@ -76,17 +77,9 @@ inline __m512 average(__mmask16 mixed, __m512 own, __m512 other) {
   return _mm512_mask_mul_ps(own, mixed, _mm512_set1_ps(0.5f), own + other);
 }
 
-inline __mmask16 liveLanes(std::uint32_t left) {
-  return left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
-}
-
-// base[idx[l]] on live lanes, 0 on the others.
-inline __m512 gather(__mmask16 live, __m512i idx, const float* base) {
-  return _mm512_mask_i32gather_ps(_mm512_setzero_ps(), live, idx, base, 4);
-}
-
-// Positions and velocities are packed x, y, z triples: the gather index is 3 j.
-inline __m512i tripleIndex(__m512i idx) { return _mm512_add_epi32(idx, _mm512_add_epi32(idx, idx)); }
+using lanes::gather;
+using lanes::liveLanes;
+using lanes::tripleIndex;
 
 // 1 / |r| from r^2: the 14-bit estimate and one Newton step (about 1 ulp), 0 where r = 0 (the
 // direction is undefined there, as in spikyGradFactor; such pairs get their pressure from

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sph/avx512_lanes.h"
+
 namespace sph {
 
 void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t particle_capacity) {
@@ -230,7 +232,7 @@ void scanRows(const std::uint32_t* row_begin, const std::uint32_t* row_end, int 
   for (int r = 0; r < rows; ++r) {
     for (std::uint32_t k = row_begin[r]; k < row_end[r]; k += 16) {
       const std::uint32_t left = row_end[r] - k;
-      const __mmask16 live = left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
+      const __mmask16 live = lanes::liveLanes(left);
       const __m512 x = _mm512_maskz_loadu_ps(live, sx + k);
       const __m512 y = _mm512_maskz_loadu_ps(live, sy + k);
       const __m512 z = _mm512_maskz_loadu_ps(live, sz + k);

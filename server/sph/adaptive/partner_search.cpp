@@ -7,6 +7,8 @@
 #include <immintrin.h>
 #endif
 
+#include "sph/avx512_lanes.h"
+
 #include <cmath>
 #include <limits>
 
@@ -75,15 +77,15 @@ std::int32_t nearestMergingNeighbourAvx512(const float* pos, const std::uint32_t
   const auto size = static_cast<std::uint32_t>(list.size());
   for (std::uint32_t b = 0; b < size; b += 16) {
     const std::uint32_t left = size - b;
-    const __mmask16 live = left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
+    const __mmask16 live = lanes::liveLanes(left);
     const __m512i j = _mm512_maskz_loadu_epi32(live, list.data() + b);
     const __m512i flag = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, j, merging, 4);
     const __mmask16 candidate = _mm512_mask_test_epi32_mask(live, flag, flag);
     if (candidate == 0) continue;
-    const __m512i j3 = _mm512_add_epi32(j, _mm512_add_epi32(j, j));
-    const __m512 dx = _mm512_sub_ps(xi, _mm512_mask_i32gather_ps(_mm512_setzero_ps(), candidate, j3, pos, 4));
-    const __m512 dy = _mm512_sub_ps(yi, _mm512_mask_i32gather_ps(_mm512_setzero_ps(), candidate, j3, pos + 1, 4));
-    const __m512 dz = _mm512_sub_ps(zi, _mm512_mask_i32gather_ps(_mm512_setzero_ps(), candidate, j3, pos + 2, 4));
+    const __m512i j3 = lanes::tripleIndex(j);
+    const __m512 dx = _mm512_sub_ps(xi, lanes::gather(candidate, j3, pos));
+    const __m512 dy = _mm512_sub_ps(yi, lanes::gather(candidate, j3, pos + 1));
+    const __m512 dz = _mm512_sub_ps(zi, lanes::gather(candidate, j3, pos + 2));
     const __m512 d2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
     const __m512i id = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), candidate, j, ids, 4);
     const __mmask16 nearer = _mm512_mask_cmp_ps_mask(candidate, d2, best_d2, _CMP_LT_OQ);
@@ -119,7 +121,7 @@ void choosePartnersWith(const ParticleSet& p, const NeighborGrid& grid, std::spa
   {
     const ThreadShare share = threadShare(n);
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      merging[i] = -static_cast<std::int32_t>((decision[i] == kMerge) & (p.size_class[i] == SizeClass::Small));
+      merging[i] = -static_cast<std::int32_t>(wantsMerge(decision[i], p.size_class[i]));
     }
 #pragma omp barrier
     // Only the flagged particles search, and they sit together: chunks even out the threads.

@@ -60,7 +60,7 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
     std::size_t count = 0;
     for (std::size_t i = share.begin; i < share.end; ++i) {
       lonely[share.begin + count] = static_cast<std::uint32_t>(i);
-      count += (partner[i] < 0) & (decision[i] == kMerge) & (p.size_class[i] == SizeClass::Small);
+      count += (partner[i] < 0) & wantsMerge(decision[i], p.size_class[i]);
     }
     ranges[2 * share.thread] = share.begin;
     ranges[2 * share.thread + 1] = count;
@@ -137,7 +137,7 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   std::uint32_t splits = 0;
   for (std::size_t i = 0; i < n; ++i) {
     splitting[splits] = static_cast<std::uint32_t>(i);
-    splits += (decision[i] == kSplit) & (p.size_class[i] == SizeClass::Large);
+    splits += wantsSplit(decision[i], p.size_class[i]);
   }
   const std::size_t first_child = p.appendZeroed(splits);
   counts.splits = static_cast<int>(splits);
