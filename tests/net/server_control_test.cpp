@@ -8,6 +8,14 @@
 
 namespace {
 
+// tiny_pool's particle count soon after a start or a reset: 1,000 LARGE at the start. No gaze has
+// arrived, so the gaze method refines by the surface (the lost-gaze fallback): once a step has
+// run, surface particles have split. How many steps run before the reply depends on the load.
+void expectFreshTinyPool(const gsph::v1::ServerStatus& status) {
+  EXPECT_GE(status.particle_count(), 1000u);
+  EXPECT_LE(status.particle_count(), 2000u);
+}
+
 using gsph::v1::Control;
 using gsph::v1::ControlReply;
 using net_test::ControlClient;
@@ -47,11 +55,7 @@ TEST(ServerControl, StatusDescribesTheServer) {
   EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_NONE);
   EXPECT_EQ(r.status().scene(), "tiny_pool");
   EXPECT_EQ(r.status().method(), gsph::v1::METHOD_GAZE);
-  // 1,000 LARGE at the start. No gaze has arrived, so the gaze method refines by the surface
-  // (the lost-gaze fallback): once a step has run, surface particles have split. How many steps
-  // run before this request is answered depends on the machine's load.
-  EXPECT_GE(r.status().particle_count(), 1000u);
-  EXPECT_LE(r.status().particle_count(), 2000u);
+  expectFreshTinyPool(r.status());
   EXPECT_FALSE(r.status().paused());
   const auto& scenes = r.status().scenes();
   EXPECT_NE(std::find(scenes.begin(), scenes.end(), "tiny_column"), scenes.end());
@@ -95,11 +99,7 @@ TEST(ServerControl, ResetRestartsTheScene) {
   const ControlReply r = run.request(reset);
   ASSERT_TRUE(r.ok());
   EXPECT_LT(r.status().step(), 20);
-  // 1,000 LARGE at the start. No gaze has arrived, so the gaze method refines by the surface
-  // (the lost-gaze fallback): once a step has run, surface particles have split. How many steps
-  // run before this request is answered depends on the machine's load.
-  EXPECT_GE(r.status().particle_count(), 1000u);
-  EXPECT_LE(r.status().particle_count(), 2000u);
+  expectFreshTinyPool(r.status());
 }
 
 TEST(ServerControl, LoadSceneByNameOnly) {
