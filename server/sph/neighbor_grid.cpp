@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <utility>
 #if defined(__AVX512F__)
 #include <immintrin.h>
@@ -21,12 +22,13 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   }
   cell_size_ = cell_size / kCellsPerSupport;
   inv_cell_size_ = 1.0f / cell_size_;
-  // One spare cell on each side of the container; the search block is clamped to the grid.
+  // One spare cell on each side of the container, never given a particle (cellOf), so every
+  // particle's cell has a neighbour cell on each side and candidateRows needs no clamping.
   origin_ = bounds.min.cast<float>() - Eigen::Vector3f::Constant(cell_size_);
   std::size_t cells = 1;
   for (int a = 0; a < 3; ++a) {
     const double extent = bounds.max[a] - bounds.min[a];
-    dims_[a] = static_cast<int>(std::ceil(extent / cell_size_)) + 2;
+    dims_[a] = std::max(static_cast<int>(std::ceil(extent / cell_size_)), 1) + 2;
     cells *= static_cast<std::size_t>(dims_[a]);
   }
   if (cells > (std::size_t{1} << 28)) {
@@ -46,8 +48,10 @@ std::uint32_t NeighborGrid::cellOf(const Vec3& p) const {
   int c[3];
   for (int a = 0; a < 3; ++a) {
     const float f = (p[a] - origin_[a]) * inv_cell_size_;
-    // NaN and out-of-grid positions land in the border cells (the caller reports NaN separately).
-    c[a] = std::isfinite(f) ? std::clamp(static_cast<int>(f), 0, dims_[a] - 1) : 0;
+    // The container spans cells 1 .. dims - 2 (a point on its far wall may compute dims - 1, and
+    // lies on that cell's lower face). NaN and out-of-grid positions land in the outermost
+    // inner cells (the caller reports NaN separately).
+    c[a] = std::isfinite(f) ? std::clamp(static_cast<int>(f), 1, dims_[a] - 2) : 1;
   }
   return static_cast<std::uint32_t>((c[2] * dims_[1] + c[1]) * dims_[0] + c[0]);
 }
@@ -155,19 +159,19 @@ void NeighborGrid::build(const ParticleSet& particles) {
 }
 
 NeighborGrid::CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) const {
-  const int cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims_[0]));
-  const int cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims_[0])) % static_cast<std::uint32_t>(dims_[1]));
-  const int cz = static_cast<int>(cell / static_cast<std::uint32_t>(dims_[0] * dims_[1]));
-  constexpr int R = kCellsPerSupport;
-  const int x0 = std::max(cx - R, 0);
-  const int x1 = std::min(cx + R, dims_[0] - 1);
+  // cellOf keeps particles off the border cells, so cell +- 1 along each axis exists: the rows are
+  // offsets from `cell`, with no division to recover its coordinates (the gaze method's LARGE
+  // particles, 12 to a cell, ask for new rows every few particles).
+  static_assert(kCellsPerSupport == 1, "the rows below are those of a 3 x 3 x 3 block");
+  const std::ptrdiff_t row_step = dims_[0];
+  const std::ptrdiff_t plane_step = row_step * dims_[1];
   CandidateRows out;
-  for (int z = std::max(cz - R, 0); z <= std::min(cz + R, dims_[2] - 1); ++z) {
-    for (int y = std::max(cy - R, 0); y <= std::min(cy + R, dims_[1] - 1); ++y) {
-      // Cells x0..x1 of one row are contiguous in the sorted list.
-      const std::size_t row = (static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0];
-      out.begin[out.count] = cell_start_[row + x0];
-      out.end[out.count] = cell_start_[row + x1 + 1];
+  for (std::ptrdiff_t dz = -1; dz <= 1; ++dz) {
+    for (std::ptrdiff_t dy = -1; dy <= 1; ++dy) {
+      // Cells centre - 1 .. centre + 1 of one row are contiguous in the sorted list.
+      const auto centre = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + dz * plane_step + dy * row_step);
+      out.begin[out.count] = cell_start_[centre - 1];
+      out.end[out.count] = cell_start_[centre + 2];
       ++out.count;
     }
   }

@@ -97,6 +97,40 @@ TEST(NeighborGrid, ListsAreExactForParticlesInCellOrder) {
   EXPECT_EQ(listsWithThreads(p, 2, &growths), one);
 }
 
+// Particles on the container's faces, edges and corners, in a box exactly three cells wide: a
+// point on a far wall computes the index of the spare border cell, which the grid keeps empty
+// (candidateRows reads the cells on both sides of a particle's cell without clamping).
+TEST(NeighborGrid, ListsAreExactForParticlesOnTheContainerWalls) {
+  const auto classes = sph::thesisPreset().classes();
+  const float cell = static_cast<float>(std::max(classes[0].support, classes[1].support));
+  sph::Aabb bounds;
+  bounds.min = Eigen::Vector3d::Zero();
+  bounds.max = Eigen::Vector3d::Constant(3.0 * cell);
+  sph::NeighborGrid grid;
+  grid.configure(bounds, cell, 1331);
+  ASSERT_EQ(grid.cellCount(), 5u * 5u * 5u);
+
+  // A lattice from wall to wall, walls included, whose spacing (0.3 cells) puts no pair exactly at
+  // the reach of eq. (3.34), where the grid's and the brute force's roundings could differ.
+  constexpr int kSteps = 10;
+  sph::ParticleSet p(1331);
+  for (int z = 0; z <= kSteps; ++z) {
+    for (int y = 0; y <= kSteps; ++y) {
+      for (int x = 0; x <= kSteps; ++x) {
+        const sph::SizeClass c = (x + y + z) % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
+        const sph::Vec3 at = sph::Vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)) *
+                             static_cast<float>(bounds.max.x() / kSteps);
+        p.add(at, sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+      }
+    }
+  }
+  p.position[0] = bounds.max.cast<float>();  // the far corner, exactly
+  grid.build(p);
+  std::vector<std::vector<std::uint32_t>> lists(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) lists[i].assign(grid.neighbors(i).begin(), grid.neighbors(i).end());
+  expectExactLists(p, lists);
+}
+
 // The vector pair loops stream a block's lists as one run of entries (fluid_stages_avx512.cpp):
 // within a block, particle i + 1's list must start where i's ends; the dense cloud regrows the
 // stride, so this holds after a rebuild too.
