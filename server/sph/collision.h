@@ -2,20 +2,77 @@
 // to the contact point (3.31), its radius taken into account, and removes the component of its
 // velocity relative to the surface that points into the surface (3.32; for moving walls the
 // velocity relative to the wall). Returns true on contact.
+//
+// Inline: the integration calls them for every particle and obstacle each step, and out of line
+// the calls (and the sphere's double centre converted to float each time) cost more than the test.
 #pragma once
+
+#include <cmath>
 
 #include "sph/boundary.h"
 #include "sph/particles.h"
 
 namespace sph {
 
+namespace detail {
+
+// Removes the velocity component along the outward normal n when it points into the obstacle,
+// eq. (3.32). A particle already moving away keeps its velocity.
+inline void removeInwardVelocity(const Vec3& n, Vec3& u) {
+  const float un = u.dot(n);
+  if (un < 0.0f) u -= un * n;
+}
+
+}  // namespace detail
+
 // Sphere obstacle, eqs. (3.25)-(3.28), inflated by the particle radius.
-bool collideSphere(const Sphere& sphere, float particle_radius, Vec3& x, Vec3& u);
+inline bool collideSphere(const Sphere& sphere, float particle_radius, Vec3& x, Vec3& u) {
+  const Vec3 c = sphere.centre.cast<float>();
+  const float reach = static_cast<float>(sphere.radius) + particle_radius;
+  const Vec3 d = x - c;
+  const float dist2 = d.squaredNorm();
+  if (dist2 >= reach * reach) return false;  // F(x) >= 0, eq. (3.25)
+  const float dist = std::sqrt(dist2);
+  // Outward normal (3.28); a particle exactly at the centre is pushed up.
+  const Vec3 n = dist > 0.0f ? Vec3(d / dist) : Vec3(0.0f, 1.0f, 0.0f);
+  x = c + reach * n;  // contact point (3.26), response (3.31)
+  detail::removeInwardVelocity(n, u);
+  return true;
+}
 
 // Vertical cylinder from floor to roof (thesis 3.5.2): the sphere test in the x-z plane.
-bool collideCylinder(const Cylinder& cylinder, float particle_radius, Vec3& x, Vec3& u);
+inline bool collideCylinder(const Cylinder& cylinder, float particle_radius, Vec3& x, Vec3& u) {
+  const float reach = static_cast<float>(cylinder.radius) + particle_radius;
+  const float dx = x.x() - static_cast<float>(cylinder.x);
+  const float dz = x.z() - static_cast<float>(cylinder.z);
+  const float dist2 = dx * dx + dz * dz;
+  if (dist2 >= reach * reach) return false;
+  const float dist = std::sqrt(dist2);
+  const Vec3 n = dist > 0.0f ? Vec3(dx / dist, 0.0f, dz / dist) : Vec3(1.0f, 0.0f, 0.0f);
+  x.x() = static_cast<float>(cylinder.x) + reach * n.x();
+  x.z() = static_cast<float>(cylinder.z) + reach * n.z();
+  detail::removeInwardVelocity(n, u);
+  return true;
+}
 
 // Inside of the axis-aligned box, eqs. (3.29)-(3.30), with wall velocities for moving walls.
-bool collideBox(const BoxState& box, float particle_radius, Vec3& x, Vec3& u);
+inline bool collideBox(const BoxState& box, float particle_radius, Vec3& x, Vec3& u) {
+  bool hit = false;
+  for (int a = 0; a < 3; ++a) {
+    const float lo = box.min[a] + particle_radius;
+    const float hi = box.max[a] - particle_radius;
+    if (x[a] < lo) {
+      // Contact point on the min face (3.29); normal +axis. Relative to the wall's own velocity.
+      x[a] = lo;
+      if (u[a] < box.min_velocity[a]) u[a] = box.min_velocity[a];
+      hit = true;
+    } else if (x[a] > hi) {
+      x[a] = hi;
+      if (u[a] > box.max_velocity[a]) u[a] = box.max_velocity[a];
+      hit = true;
+    }
+  }
+  return hit;
+}
 
 }  // namespace sph
