@@ -439,18 +439,18 @@ class ForceStage {
 
 }  // namespace
 
-// Each stage gets its SizeClassLanes and KernelBlend from outside: a batch reads its kernel
-// constants through pointers into them, and while they were members of the stage GCC could not
-// tell those loads from the stage's own sums, so it kept the force loop's ten sums in memory and
-// stored them after every batch (BM_Forces, 1 thread, best of 8: regular 4.30 -> 4.12 ms, gaze
-// 1.52 -> 1.38 ms).
+// Each stage gets its SizeClassLanes (shared, read-only) and KernelBlend (its own scratch) from
+// outside: a batch reads its kernel constants through pointers into them, and while they were
+// members of the stage GCC could not tell those loads from the stage's own sums, so it kept the
+// force loop's ten sums in memory and stored them after every batch (BM_Forces, 1 thread, best of
+// 8: regular 4.30 -> 4.12 ms, gaze 1.52 -> 1.38 ms).
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
                             const NeighborGrid& grid, ParticleSet& p) {
   const std::size_t n = p.size();
+  const SizeClassLanes classes(params, kernels, p);
   // Blocks to whichever thread is free: the cost of a particle varies with its class and count.
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t block = 0; block < NeighborGrid::blockCount(n); ++block) {
-    const SizeClassLanes classes(params, kernels, p);
     KernelBlend blend;
     DensityStage stage(params, kernels, classes, blend, p);
     walkBlock(grid, block, n, stage);
@@ -460,9 +460,9 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 void computeAccelerations(const SimParams& params, const KernelTable& kernels,
                           const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
   const std::size_t n = p.size();
+  const SizeClassLanes classes(params, kernels, p);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t block = 0; block < NeighborGrid::blockCount(n); ++block) {
-    const SizeClassLanes classes(params, kernels, p);
     KernelBlend blend;
     ForceStage stage(params, kernels, classes, blend, p, propagate_surface_distance);
     walkBlock(grid, block, n, stage);

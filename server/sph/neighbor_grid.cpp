@@ -161,7 +161,7 @@ void NeighborGrid::build(const ParticleSet& particles) {
 NeighborGrid::CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) const {
   // cellOf keeps particles off the border cells, so cell +- 1 along each axis exists: the rows are
   // offsets from `cell`, with no division to recover its coordinates (the gaze method's LARGE
-  // particles, 12 to a cell, ask for new rows every few particles).
+  // particles, about eight to a cell, ask for new rows every few particles).
   static_assert(kCellsPerSupport == 1, "the rows below are those of a 3 x 3 x 3 block");
   const std::ptrdiff_t row_step = dims_[0];
   const std::ptrdiff_t plane_step = row_step * dims_[1];
