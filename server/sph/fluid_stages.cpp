@@ -187,9 +187,7 @@ void integrateAndCollide(const SimParams& params, const Boundary& boundary, cons
     Vec3 u = p.velocity[i] + dt * p.acceleration[i];  // eq. (3.21)
     Vec3 x = p.position[i] + dt * u;                   // eq. (3.22), with the updated velocity
     const float r = p.radius[i];
-    for (const Sphere& s : boundary.spheres) collideSphere(s, r, x, u);
-    for (const Cylinder& c : boundary.cylinders) collideCylinder(c, r, x, u);
-    collideBox(box, r, x, u);  // last: whatever the obstacles did, the particle ends inside the box
+    collideBoundary(boundary, box, r, x, u);
     p.velocity[i] = u;
     p.position[i] = x;
   }

@@ -34,9 +34,7 @@ float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, f
 // touching its velocity (split keeps velocities, eq. 3.39).
 void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float radius, Vec3& x) {
   Vec3 unused_velocity = Vec3::Zero();
-  for (const Sphere& s : boundary.spheres) collideSphere(s, radius, x, unused_velocity);
-  for (const Cylinder& c : boundary.cylinders) collideCylinder(c, radius, x, unused_velocity);
-  collideBox(box, radius, x, unused_velocity);
+  collideBoundary(boundary, box, radius, x, unused_velocity);
 }
 
 }  // namespace
