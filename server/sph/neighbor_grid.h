@@ -1,6 +1,6 @@
 // Neighbour search on a uniform grid: a counting sort bins particles into cells (deterministic,
-// serial), then a parallel pass writes each particle's neighbours into one flat array, the lists
-// packed back to back within blocks of 256 particles. Neighbours follow the adaptive criterion
+// the same order for any thread count), then a parallel pass writes each particle's neighbours
+// into one flat array, the lists packed back to back within blocks of 256 particles. Neighbours follow the adaptive criterion
 // |ri - rj| <= (hi + hj) / 2, eq. (3.34), so mixed SMALL and LARGE particles need no second code
 // path.
 #pragma once
@@ -54,7 +54,8 @@ class NeighborGrid {
   double meanNeighbors() const;
 
  private:
-  std::uint32_t cellOf(const Vec3& p) const;
+  // The cells of particles [begin, end) (packed x, y, z positions) into out[begin, end).
+  void cellsOf(const float* xyz, std::size_t begin, std::size_t end, std::uint32_t* out) const;
 
   // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
   // cells. Half-radius cells (25 rows of 5) test about 40 % fewer candidates, but each row costs its
@@ -101,6 +102,10 @@ class NeighborGrid {
   std::vector<std::uint32_t> cell_start_;      // cells + 1 offsets into cell_particles_
   std::vector<std::uint32_t> cell_particles_;  // particle indices grouped by cell
   std::vector<std::uint32_t> particle_cell_;   // cell of each particle
+  // The counting sort's per-thread counts, then write cursors: thread t's at [t cells, (t + 1) cells).
+  std::vector<std::uint32_t> thread_cursor_;
+  std::vector<std::uint32_t> cell_range_total_;  // per thread: particles in its share of the cells
+  std::vector<std::uint32_t> cell_sum_;          // per cell: particles, then a running cursor
   // Position and support radius of cell_particles_[k] at k, one array per coordinate: the candidate
   // loop reads memory in order, 16 candidates per AVX-512 instruction where the CPU has it.
   std::vector<float> sorted_x_, sorted_y_, sorted_z_, sorted_support_;

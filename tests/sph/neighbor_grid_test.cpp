@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -81,6 +82,46 @@ TEST(NeighborGrid, PackedListsAreExactForAnyThreadCount) {
   for (int threads : {2, 3}) {
     EXPECT_EQ(listsWithThreads(p, threads, &growths), one) << threads << " threads";
   }
+}
+
+// The counting sort is shared by the threads (each places its own share of the particles): the
+// order must be the serial one whatever the thread count, ascending particle index inside a cell.
+// Sorting particles already in cell order must then leave them where they are.
+TEST(NeighborGrid, CellOrderIsTheSameForAnyThreadCount) {
+  sph::ParticleSet p = denseCloud();
+  const auto orderWith = [](const sph::ParticleSet& particles, int threads) {
+    sph::NeighborGrid grid = cloudGrid(particles.size());
+    const int previous = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    grid.bin(particles);
+    omp_set_num_threads(previous);
+    return std::vector<std::uint32_t>(grid.cellOrder().begin(), grid.cellOrder().end());
+  };
+  const std::vector<std::uint32_t> one = orderWith(p, 1);
+  std::vector<std::uint32_t> sorted = one;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::uint32_t k = 0; k < sorted.size(); ++k) ASSERT_EQ(sorted[k], k) << "not a permutation";
+  EXPECT_EQ(orderWith(p, 2), one);
+  EXPECT_EQ(orderWith(p, 3), one);
+
+  p.permute(one);
+  std::vector<std::uint32_t> identity(p.size());
+  for (std::uint32_t k = 0; k < identity.size(); ++k) identity[k] = k;
+  for (int threads : {1, 2, 3}) EXPECT_EQ(orderWith(p, threads), identity) << threads << " threads";
+}
+
+// A NaN or infinite position (the step reports them; it must not corrupt the grid) lands in an
+// inner cell: the other particles' lists stay exact and the broken ones have no neighbours.
+TEST(NeighborGrid, NonFinitePositionsLeaveTheOtherListsExact) {
+  sph::ParticleSet p = denseCloud();
+  const float inf = std::numeric_limits<float>::infinity();
+  p.position[10] = sph::Vec3(std::numeric_limits<float>::quiet_NaN(), 0.05f, 0.05f);
+  p.position[20] = sph::Vec3(inf, inf, inf);
+  p.position[30] = sph::Vec3(-inf, 0.05f, inf);
+  std::size_t growths = 0;
+  const auto lists = listsWithThreads(p, 2, &growths);
+  expectExactLists(p, lists);
+  for (std::size_t broken : {10u, 20u, 30u}) EXPECT_TRUE(lists[broken].empty()) << "particle " << broken;
 }
 
 // The simulation re-sorts the particles into cell order, so most particles share their cell's
