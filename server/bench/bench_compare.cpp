@@ -123,6 +123,8 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
         md += any->run.omp_wait;
         md += "), preset ";
         md += any->run.preset;
+        md += ". Other load while the scene ran: ";
+        md += describe(any->run.machine_load);
         md += ".\n";
       }
     }

@@ -64,6 +64,10 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["frames"] = run.frames;
   j["threads"] = run.threads;
   j["omp_wait"] = run.omp_wait;
+  // What else ran on the machine meanwhile (machine_load.h); null where it cannot be read.
+  j["machine_load"] = run.machine_load.known ? nlohmann::json{{"other_processes_cores", run.machine_load.other_cores},
+                                                              {"stolen_cores", run.machine_load.steal_cores}}
+                                             : nlohmann::json();
   j["phases"] = {{"neighbor_search", phaseJson(s.neighbor)},
                  {"density_pressure", phaseJson(s.density_pressure)},
                  {"accel_integrate_collide", phaseJson(s.accel_integrate_collide)},
@@ -107,12 +111,12 @@ std::string summaryText(const RunResult& run, const Summary& s) {
                 "%s/%s: %d frames, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
                 "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s | "
                 "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
-                "NaN %zu, outside %zu",
+                "NaN %zu, outside %zu | other load: %s",
                 run.scene.c_str(), run.method.c_str(), run.frames, run.threads, s.neighbor.mean,
                 s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean,
                 s.total.p95, s.steps_per_s, s.mean_large, s.mean_small, s.mean_neighbors,
                 s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values,
-                s.outside_box);
+                s.outside_box, describe(run.machine_load).c_str());
   return buf;
 }
 

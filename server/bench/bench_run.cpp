@@ -86,6 +86,7 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   result_.omp_wait = sph::ompWaitDescription();
   result_.mass_start = sim_->particles().totalMass();
   result_.records.reserve(result_.frames);
+  start_ = takeCpuSnapshot();
 }
 
 void SceneRun::stepFrame() {
@@ -111,6 +112,7 @@ RunResult SceneRun::result() const {
   RunResult out = result_;
   out.mass_end = sim_->particles().totalMass();
   out.neighbor_stride = sim_->grid().stride();
+  out.machine_load = loadBetween(start_, takeCpuSnapshot());
   return out;
 }
 

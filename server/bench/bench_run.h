@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/machine_load.h"
 #include "gaze/gaze_recording.h"
 #include "sph/adaptive/adaptive_controller.h"
 #include "sph/scene.h"
@@ -41,6 +42,9 @@ struct RunResult {
   std::size_t neighbor_stride = 0;  // most entries one neighbour list may hold, at the end
   double mass_start = 0.0;
   double mass_end = 0.0;
+  // Other processes and the hypervisor between the run's start and result(): for runs that take
+  // turns (sph_bench --interleave), the window of the whole scene.
+  MachineLoad machine_load;
   std::vector<FrameRecord> records;
 };
 
@@ -81,6 +85,7 @@ class SceneRun {
   std::unique_ptr<sph::Simulation> sim_;
   sph::AdaptiveController* controller_ = nullptr;
   RunResult result_;
+  CpuSnapshot start_;
 };
 
 // A whole run, start to end.

@@ -108,6 +108,7 @@ TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   regular.run.frames = gaze_run.run.frames = 300;
   regular.run.threads = gaze_run.run.threads = 2;
   regular.run.omp_wait = gaze_run.run.omp_wait = "GOMP_SPINCOUNT=1000";
+  regular.run.machine_load = gaze_run.run.machine_load = {true, 0.25, 0.05};
   const std::string md = bench::comparisonMarkdown({regular, gaze_run});
   EXPECT_NE(md.find("## dambreak"), std::string::npos) << md;
   EXPECT_NE(md.find("| phase | regular | gaze |"), std::string::npos) << md;
@@ -116,6 +117,9 @@ TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   EXPECT_NE(md.find("| Adaptive share of step | 0.0 % | 5.0 % |"), std::string::npos) << md;
   // Timings mean little without how the threads waited for each other (sph/omp_wait.h).
   EXPECT_NE(md.find("300 frames, 2 threads (OpenMP wait: GOMP_SPINCOUNT=1000)"), std::string::npos) << md;
+  // Nor without what else the machine did meanwhile (bench/machine_load.h).
+  EXPECT_NE(md.find("Other load while the scene ran: 0.25 cores in other processes, 0.05 stolen."), std::string::npos)
+      << md;
 }
 
 }  // namespace
