@@ -60,7 +60,7 @@ void NeighborGrid::cellsOf(const float* __restrict xyz, std::size_t begin, std::
   const float top_x = static_cast<float>(dims_[0] - 2), top_y = static_cast<float>(dims_[1] - 2),
               top_z = static_cast<float>(dims_[2] - 2);
   const auto axis = [](float f, float top) {
-    f = f >= 1.0f ? f : 1.0f;            // also NaN
+    f = f >= 1.0f ? f : 1.0f;  // NaN too
     f = f < top + 1.0f ? f : top;
     return static_cast<int>(f);
   };
@@ -124,7 +124,7 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   neighbor_count_.resize(n);
   neighbor_start_.resize(n);
   for (auto* v : {&sorted_x_, &sorted_y_, &sorted_z_, &sorted_support_}) v->resize(n);
-  // Sized in configure() for the thread count then; more threads since need more room.
+  // configure() sized the counts for the thread count of its time; a larger team needs more.
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   if (thread_cursor_.size() < threads * cells) thread_cursor_.resize(threads * cells);
   cell_range_total_.resize(threads);
