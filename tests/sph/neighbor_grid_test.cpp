@@ -41,20 +41,31 @@ sph::NeighborGrid cloudGrid(std::size_t capacity) {
   return grid;
 }
 
-std::vector<std::vector<std::uint32_t>> listsWithThreads(const sph::ParticleSet& particles, int threads,
-                                                         std::size_t* stride_growths) {
-  sph::NeighborGrid grid = cloudGrid(particles.size());
+// Runs f with OpenMP limited to `threads`, then restores the previous count.
+template <typename F>
+void withThreads(int threads, F&& f) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  grid.build(particles);
+  f();
   omp_set_num_threads(previous);
-  *stride_growths = grid.strideGrowths();
-  std::vector<std::vector<std::uint32_t>> lists(particles.size());
-  for (std::size_t i = 0; i < particles.size(); ++i) {
+}
+
+// The grid's lists of particles 0 .. count - 1, copied out.
+std::vector<std::vector<std::uint32_t>> listsOf(const sph::NeighborGrid& grid, std::size_t count) {
+  std::vector<std::vector<std::uint32_t>> lists(count);
+  for (std::size_t i = 0; i < count; ++i) {
     const auto list = grid.neighbors(i);
     lists[i].assign(list.begin(), list.end());
   }
   return lists;
+}
+
+std::vector<std::vector<std::uint32_t>> listsWithThreads(const sph::ParticleSet& particles, int threads,
+                                                         std::size_t* stride_growths) {
+  sph::NeighborGrid grid = cloudGrid(particles.size());
+  withThreads(threads, [&] { grid.build(particles); });
+  *stride_growths = grid.strideGrowths();
+  return listsOf(grid, particles.size());
 }
 
 // Every pair within reach, in any order: brute force against the grid's lists.
@@ -91,10 +102,7 @@ TEST(NeighborGrid, CellOrderIsTheSameForAnyThreadCount) {
   sph::ParticleSet p = denseCloud();
   const auto orderWith = [](const sph::ParticleSet& particles, int threads) {
     sph::NeighborGrid grid = cloudGrid(particles.size());
-    const int previous = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    grid.bin(particles);
-    omp_set_num_threads(previous);
+    withThreads(threads, [&] { grid.bin(particles); });
     return std::vector<std::uint32_t>(grid.cellOrder().begin(), grid.cellOrder().end());
   };
   const std::vector<std::uint32_t> one = orderWith(p, 1);
@@ -167,9 +175,7 @@ TEST(NeighborGrid, ListsAreExactForParticlesOnTheContainerWalls) {
   }
   p.position[0] = bounds.max.cast<float>();  // the far corner, exactly
   grid.build(p);
-  std::vector<std::vector<std::uint32_t>> lists(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) lists[i].assign(grid.neighbors(i).begin(), grid.neighbors(i).end());
-  expectExactLists(p, lists);
+  expectExactLists(p, listsOf(grid, p.size()));
 }
 
 // The vector pair loops stream a block's lists as one run of entries (fluid_stages_avx512.cpp):
