@@ -40,8 +40,7 @@ bool decodeGeometry(const gsph::v1::Geometry& g, SceneGeometry& out, std::string
   }
   for (const auto& c : g.cylinders()) {
     CylinderShape shape{c.x(), c.z(), c.radius()};
-    if (!std::isfinite(shape.x) || !std::isfinite(shape.z) || !std::isfinite(shape.radius) ||
-        shape.radius < 0.0f) {
+    if (!std::isfinite(shape.x) || !std::isfinite(shape.z) || !std::isfinite(shape.radius) || shape.radius < 0.0f) {
       error = "geometry cylinder is not finite or has a negative radius";
       return false;
     }
@@ -50,8 +49,7 @@ bool decodeGeometry(const gsph::v1::Geometry& g, SceneGeometry& out, std::string
   return true;
 }
 
-bool decodeFloatPositions(const std::string& bytes, std::size_t n, std::vector<Vec3f>& out,
-                          std::string& error) {
+bool decodeFloatPositions(const std::string& bytes, std::size_t n, std::vector<Vec3f>& out, std::string& error) {
   if (bytes.size() != n * kFloatStride) {
     error = "float32 positions hold " + std::to_string(bytes.size()) + " bytes, expected " +
             std::to_string(n * kFloatStride) + " for " + std::to_string(n) + " particles";
@@ -68,8 +66,8 @@ bool decodeFloatPositions(const std::string& bytes, std::size_t n, std::vector<V
   return true;
 }
 
-bool decodeQuantizedPositions(const gsph::v1::Frame& frame, std::size_t n,
-                              std::vector<Vec3f>& out, std::string& error) {
+bool decodeQuantizedPositions(const gsph::v1::Frame& frame, std::size_t n, std::vector<Vec3f>& out,
+                              std::string& error) {
   const std::string& bytes = frame.positions();
   if (bytes.size() != n * kQuantizedStride) {
     error = "quantized16 positions hold " + std::to_string(bytes.size()) + " bytes, expected " +
@@ -104,8 +102,7 @@ bool decodeQuantizedPositions(const gsph::v1::Frame& frame, std::size_t n,
 }  // namespace
 
 bool GazeOverlay::drawable() const {
-  return (mode == gsph::v1::GAZE_MODE_TRACKING || mode == gsph::v1::GAZE_MODE_HOLDING) &&
-         radius > 0.0f;
+  return (mode == gsph::v1::GAZE_MODE_TRACKING || mode == gsph::v1::GAZE_MODE_HOLDING) && radius > 0.0f;
 }
 
 bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error) {
@@ -158,8 +155,8 @@ bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& e
   }
   out.radius_small = frame.radius_small();
   out.radius_large = frame.radius_large();
-  if (!std::isfinite(out.radius_small) || !std::isfinite(out.radius_large) ||
-      out.radius_small < 0.0f || out.radius_large < 0.0f) {
+  if (!std::isfinite(out.radius_small) || !std::isfinite(out.radius_large) || out.radius_small < 0.0f ||
+      out.radius_large < 0.0f) {
     error = "particle radii must be finite and non-negative";
     return false;
   }
@@ -176,8 +173,8 @@ bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& e
   out.steps_per_second = frame.steps_per_second();
   const auto& g = frame.gaze();
   out.gaze = {g.mode(), g.x(), g.y(), g.radius(), g.ring_radius(), g.age_ms()};
-  if (!std::isfinite(out.gaze.x) || !std::isfinite(out.gaze.y) ||
-      !std::isfinite(out.gaze.radius) || !std::isfinite(out.gaze.ring_radius)) {
+  if (!std::isfinite(out.gaze.x) || !std::isfinite(out.gaze.y) || !std::isfinite(out.gaze.radius) ||
+      !std::isfinite(out.gaze.ring_radius)) {
     out.gaze.mode = gsph::v1::GAZE_MODE_UNSPECIFIED;  // not drawable; the frame itself is fine
   }
   out.has_camera = frame.has_camera();

@@ -16,8 +16,7 @@ GLuint compile(GLenum type, const char* source, const std::string& name) {
     char log[2048] = {};
     glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
     glDeleteShader(shader);
-    throw std::runtime_error(name + (type == GL_VERTEX_SHADER ? " vertex" : " fragment") +
-                             " shader: " + log);
+    throw std::runtime_error(name + (type == GL_VERTEX_SHADER ? " vertex" : " fragment") + " shader: " + log);
   }
   return shader;
 }

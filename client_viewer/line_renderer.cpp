@@ -51,8 +51,8 @@ void LineRenderer::draw(const LineList& lines, const Eigen::Matrix4f& transform)
   glUniformMatrix4fv(program_.uniform("u_transform"), 1, GL_FALSE, transform.data());
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(LineVertex)),
-               lines.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(LineVertex)), lines.data(),
+               GL_STREAM_DRAW);
   glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size()));
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);

@@ -14,15 +14,14 @@ constexpr int kHeartbeatIvlMs = 1000;
 constexpr int kHeartbeatTimeoutMs = 3000;
 constexpr int kReconnectIvlMs = 200;
 constexpr int kReconnectIvlMaxMs = 2000;
-constexpr std::int64_t kMaxFrameBytes = 256ll << 20;   // ~10 M particles as float32
+constexpr std::int64_t kMaxFrameBytes = 256ll << 20;  // ~10 M particles as float32
 constexpr std::int64_t kMaxReplyBytes = 1ll << 20;
 constexpr std::size_t kMaxQueuedControls = 8;
 constexpr std::size_t kMaxQueuedReplies = 32;
 constexpr auto kPollPeriod = std::chrono::milliseconds(5);  // upper bound on pose/gaze send delay
 
 std::int64_t systemMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 
@@ -144,8 +143,7 @@ NetworkStats NetworkClient::stats() const {
 void NetworkClient::run() {
   Sockets& s = *sockets_;
   while (running_) {
-    zmq::pollitem_t items[] = {{s.frames.handle(), 0, ZMQ_POLLIN, 0},
-                               {s.control.handle(), 0, ZMQ_POLLIN, 0}};
+    zmq::pollitem_t items[] = {{s.frames.handle(), 0, ZMQ_POLLIN, 0}, {s.control.handle(), 0, ZMQ_POLLIN, 0}};
     try {
       zmq::poll(items, 2, kPollPeriod);
       if (items[0].revents & ZMQ_POLLIN) receiveFrames(s);

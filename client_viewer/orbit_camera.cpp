@@ -19,8 +19,7 @@ constexpr float kMaxDistance = 500.0f;
 }  // namespace
 
 // The same matrices the server projects gaze with (sph/camera.h), in the float GL wants.
-Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
-                       const Eigen::Vector3f& up) {
+Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target, const Eigen::Vector3f& up) {
   return sph::lookAt(eye.cast<double>(), target.cast<double>(), up.cast<double>()).cast<float>();
 }
 
@@ -42,8 +41,7 @@ void OrbitCamera::frameBox(const Eigen::Vector3f& box_min, const Eigen::Vector3f
   target_ = 0.5f * (box_min + box_max);
   const float radius = std::max(0.5f * (box_max - box_min).norm(), 0.05f);
   // distance at which a sphere around the box fits the vertical field of view, plus a margin
-  distance_ = std::clamp(1.1f * radius / std::sin(fov_y_degrees_ * kPi / 360.0f), kMinDistance,
-                         kMaxDistance);
+  distance_ = std::clamp(1.1f * radius / std::sin(fov_y_degrees_ * kPi / 360.0f), kMinDistance, kMaxDistance);
   yaw_ = 0.0f;
   pitch_ = 0.35f;
 }

@@ -8,8 +8,7 @@
 namespace viewer {
 
 // gluLookAt / gluPerspective equivalents (right-handed, camera looks down -z, depth -1..1).
-Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target,
-                       const Eigen::Vector3f& up);
+Eigen::Matrix4f lookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& target, const Eigen::Vector3f& up);
 Eigen::Matrix4f perspective(float fov_y_degrees, float aspect, float near_plane, float far_plane);
 
 class OrbitCamera {

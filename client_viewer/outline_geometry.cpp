@@ -21,16 +21,15 @@ void segment(LineList& lines, float x0, float y0, float z0, float x1, float y1, 
 }
 
 // A circle in the plane spanned by unit axes a and b around centre (cx, cy, cz).
-void circle(LineList& lines, float cx, float cy, float cz, float radius, const float a[3],
-            const float b[3], Rgb colour) {
+void circle(LineList& lines, float cx, float cy, float cz, float radius, const float a[3], const float b[3],
+            Rgb colour) {
   for (int i = 0; i < kCircleSegments; ++i) {
     const float t0 = kTwoPi * static_cast<float>(i) / kCircleSegments;
     const float t1 = kTwoPi * static_cast<float>(i + 1) / kCircleSegments;
     const float c0 = std::cos(t0) * radius, s0 = std::sin(t0) * radius;
     const float c1 = std::cos(t1) * radius, s1 = std::sin(t1) * radius;
     segment(lines, cx + c0 * a[0] + s0 * b[0], cy + c0 * a[1] + s0 * b[1], cz + c0 * a[2] + s0 * b[2],
-            cx + c1 * a[0] + s1 * b[0], cy + c1 * a[1] + s1 * b[1], cz + c1 * a[2] + s1 * b[2],
-            colour);
+            cx + c1 * a[0] + s1 * b[0], cy + c1 * a[1] + s1 * b[1], cz + c1 * a[2] + s1 * b[2], colour);
   }
 }
 
@@ -78,8 +77,7 @@ void appendGeometry(LineList& lines, const SceneGeometry& g) {
   for (const auto& cyl : g.cylinders) appendCylinder(lines, cyl, floor, roof, kObstacleColour);
 }
 
-void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width, float aspect,
-                        Rgb c, bool dashed) {
+void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width, float aspect, Rgb c, bool dashed) {
   // normalized top-left -> NDC; a radius of w*r pixels is 2r in NDC x and 2r*aspect in NDC y
   const float cx = 2.0f * x - 1.0f;
   const float cy = 1.0f - 2.0f * y;
@@ -89,8 +87,8 @@ void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width
     if (dashed && (i % 2 == 1)) continue;
     const float t0 = kTwoPi * static_cast<float>(i) / kCircleSegments;
     const float t1 = kTwoPi * static_cast<float>(i + 1) / kCircleSegments;
-    segment(lines, cx + rx * std::cos(t0), cy + ry * std::sin(t0), 0.0f, cx + rx * std::cos(t1),
-            cy + ry * std::sin(t1), 0.0f, c);
+    segment(lines, cx + rx * std::cos(t0), cy + ry * std::sin(t0), 0.0f, cx + rx * std::cos(t1), cy + ry * std::sin(t1),
+            0.0f, c);
   }
 }
 

@@ -23,14 +23,13 @@ void appendBox(LineList& lines, const Vec3f& lo, const Vec3f& hi, Rgb colour);
 // Three great circles (one per axis plane).
 void appendSphere(LineList& lines, const SphereShape& sphere, Rgb colour);
 // A vertical cylinder from y_floor to y_roof: two circles and four vertical lines.
-void appendCylinder(LineList& lines, const CylinderShape& cylinder, float y_floor, float y_roof,
-                    Rgb colour);
+void appendCylinder(LineList& lines, const CylinderShape& cylinder, float y_floor, float y_roof, Rgb colour);
 void appendGeometry(LineList& lines, const SceneGeometry& geometry);
 
 // A circle on the screen given as the protocol does: centre normalized 0..1 with the origin at the
 // top left, radius as a fraction of the viewport width. Output in NDC (x right, y up), z = 0.
-void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width, float aspect,
-                        Rgb colour, bool dashed = false);
+void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width, float aspect, Rgb colour,
+                        bool dashed = false);
 // The gaze circle and, when wider, the REMAIN ring around it, coloured by the gaze mode.
 void appendGazeOverlay(LineList& lines, const GazeOverlay& gaze, float aspect);
 

@@ -105,16 +105,14 @@ void ParticleRenderer::upload(const DecodedFrame& frame) {
   }
   // Orphan and refill: the driver may still be drawing from the previous contents.
   glBindBuffer(GL_ARRAY_BUFFER, centre_buffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n * sizeof(Vec3f)), frame.positions.data(),
-               GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n * sizeof(Vec3f)), frame.positions.data(), GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, attribute_buffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size() * sizeof(float)),
-               staging_.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data(),
+               GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void ParticleRenderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
-                            ColourMode mode) const {
+void ParticleRenderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection, ColourMode mode) const {
   if (count_ == 0) return;
   glUseProgram(program_.id());
   glUniformMatrix4fv(program_.uniform("u_view"), 1, GL_FALSE, view.data());

@@ -12,8 +12,8 @@ struct RgbaImage {
   int height = 0;
   std::vector<std::uint8_t> pixels;  // rows top first, 4 bytes per pixel
   const std::uint8_t* at(int x, int y) const {
-    return pixels.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                            static_cast<std::size_t>(x)) * 4;
+    return pixels.data() +
+           (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
   }
 };
 

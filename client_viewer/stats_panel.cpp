@@ -8,8 +8,8 @@ namespace viewer {
 
 namespace {
 
-constexpr gsph::v1::Method kMethods[] = {gsph::v1::METHOD_REGULAR, gsph::v1::METHOD_SURFACE,
-                                         gsph::v1::METHOD_GAZE, gsph::v1::METHOD_HYBRID};
+constexpr gsph::v1::Method kMethods[] = {gsph::v1::METHOD_REGULAR, gsph::v1::METHOD_SURFACE, gsph::v1::METHOD_GAZE,
+                                         gsph::v1::METHOD_HYBRID};
 constexpr float kMinGazeRadius = 0.005f;
 constexpr float kMaxGazeRadius = 0.5f;
 
@@ -17,21 +17,31 @@ constexpr float kMaxGazeRadius = 0.5f;
 
 const char* methodName(gsph::v1::Method method) {
   switch (method) {
-    case gsph::v1::METHOD_REGULAR: return "regular";
-    case gsph::v1::METHOD_SURFACE: return "surface";
-    case gsph::v1::METHOD_GAZE: return "gaze";
-    case gsph::v1::METHOD_HYBRID: return "hybrid";
-    default: return "?";
+    case gsph::v1::METHOD_REGULAR:
+      return "regular";
+    case gsph::v1::METHOD_SURFACE:
+      return "surface";
+    case gsph::v1::METHOD_GAZE:
+      return "gaze";
+    case gsph::v1::METHOD_HYBRID:
+      return "hybrid";
+    default:
+      return "?";
   }
 }
 
 const char* gazeModeName(gsph::v1::GazeMode mode) {
   switch (mode) {
-    case gsph::v1::GAZE_MODE_NONE: return "not used";
-    case gsph::v1::GAZE_MODE_TRACKING: return "tracking";
-    case gsph::v1::GAZE_MODE_HOLDING: return "holding";
-    case gsph::v1::GAZE_MODE_FALLBACK: return "fallback (surface)";
-    default: return "-";
+    case gsph::v1::GAZE_MODE_NONE:
+      return "not used";
+    case gsph::v1::GAZE_MODE_TRACKING:
+      return "tracking";
+    case gsph::v1::GAZE_MODE_HOLDING:
+      return "holding";
+    case gsph::v1::GAZE_MODE_FALLBACK:
+      return "fallback (surface)";
+    default:
+      return "-";
   }
 }
 
@@ -40,8 +50,8 @@ void StatsPanel::showReply(const gsph::v1::ControlReply& reply) {
   if (reply.ok()) {
     std::snprintf(line, sizeof(line), "request %llu ok", static_cast<unsigned long long>(reply.request_id()));
   } else {
-    std::snprintf(line, sizeof(line), "request %llu failed: %s",
-                  static_cast<unsigned long long>(reply.request_id()), reply.error().c_str());
+    std::snprintf(line, sizeof(line), "request %llu failed: %s", static_cast<unsigned long long>(reply.request_id()),
+                  reply.error().c_str());
   }
   message_ = line;
 }
@@ -56,8 +66,7 @@ void StatsPanel::togglePause(const DecodedFrame* frame) {
   client_.sendControl(std::move(request));
 }
 
-void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates,
-                      bool mouse_gaze) {
+void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates, bool mouse_gaze) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.75f);
   if (!ImGui::Begin("sph_viewer", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
@@ -65,22 +74,20 @@ void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, cons
     return;
   }
   ImGui::Text("viewer  %.1f fps, arrival->pixels %.1f ms", rates.render_fps, rates.arrival_to_pixels_ms);
-  ImGui::Text("frames  %llu received, %llu skipped, %llu rejected",
-              static_cast<unsigned long long>(stats.frames_received),
-              static_cast<unsigned long long>(stats.frames_skipped),
-              static_cast<unsigned long long>(stats.frames_rejected));
+  ImGui::Text(
+      "frames  %llu received, %llu skipped, %llu rejected", static_cast<unsigned long long>(stats.frames_received),
+      static_cast<unsigned long long>(stats.frames_skipped), static_cast<unsigned long long>(stats.frames_rejected));
   if (frame != nullptr) {
     ImGui::Separator();
     ImGui::Text("scene   %s   method %s%s", frame->scene.c_str(), methodName(frame->method),
                 frame->paused ? "   PAUSED" : "");
     ImGui::Text("server  %.1f steps/s, step %lld, t = %.2f s", frame->steps_per_second,
                 static_cast<long long>(frame->step), frame->sim_time);
-    ImGui::Text("particles %zu: LARGE %u, SMALL %u", frame->particleCount(), frame->large_count,
-                frame->small_count);
+    ImGui::Text("particles %zu: LARGE %u, SMALL %u", frame->particleCount(), frame->large_count, frame->small_count);
     const auto& t = frame->timings;
     ImGui::Text("ms  neighbours %.2f  density+pressure %.2f", t.neighbor_ms(), t.density_pressure_ms());
-    ImGui::Text("    accel+integrate+collide %.2f  adaptive %.2f  total %.2f",
-                t.accel_integrate_collide_ms(), t.adaptive_ms(), t.total_ms());
+    ImGui::Text("    accel+integrate+collide %.2f  adaptive %.2f  total %.2f", t.accel_integrate_collide_ms(),
+                t.adaptive_ms(), t.total_ms());
     ImGui::Text("gaze    %s, age %.0f ms, radius %.3f W", gazeModeName(frame->gaze.mode), frame->gaze.age_ms,
                 frame->gaze.radius);
     ImGui::Text("frame   seq %llu, age %.1f ms, %s, %zu KB", static_cast<unsigned long long>(frame->sequence),
@@ -88,8 +95,10 @@ void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, cons
                 frame->encoding == gsph::v1::POSITION_ENCODING_QUANTIZED16 ? "quantized16" : "float32",
                 frame->wire_bytes / 1024);
   }
-  if (mouse_gaze) ImGui::Text("gaze from this viewer: %llu samples sent", static_cast<unsigned long long>(stats.gaze_sent));
-  if (!stats.last_error.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "last error: %s", stats.last_error.c_str());
+  if (mouse_gaze)
+    ImGui::Text("gaze from this viewer: %llu samples sent", static_cast<unsigned long long>(stats.gaze_sent));
+  if (!stats.last_error.empty())
+    ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "last error: %s", stats.last_error.c_str());
   ImGui::Separator();
   drawControls(frame, client_.latestStatus());
   ImGui::End();

@@ -20,8 +20,7 @@ class StatsPanel {
  public:
   explicit StatsPanel(NetworkClient& client) : client_(client) {}
 
-  void draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates,
-            bool mouse_gaze);
+  void draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates, bool mouse_gaze);
   // Puts the latest reply (or its error) into the panel's message line.
   void showReply(const gsph::v1::ControlReply& reply);
   void togglePause(const DecodedFrame* frame);

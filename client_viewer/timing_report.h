@@ -24,8 +24,8 @@ class TimingReport {
     std::printf(
         "sph_viewer report: renders=%llu wall_s=%.2f render_fps=%.1f frames_shown=%zu "
         "arrival_to_pixels_ms mean=%.2f p50=%.2f p99=%.2f max=%.2f\n",
-        renders_, wall_seconds, wall_seconds > 0 ? static_cast<double>(renders_) / wall_seconds : 0.0,
-        v.size(), mean, pct(0.5), pct(0.99), v.empty() ? 0.0 : v.back());
+        renders_, wall_seconds, wall_seconds > 0 ? static_cast<double>(renders_) / wall_seconds : 0.0, v.size(), mean,
+        pct(0.5), pct(0.99), v.empty() ? 0.0 : v.back());
     std::fflush(stdout);
   }
 

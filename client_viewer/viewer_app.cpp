@@ -28,7 +28,7 @@ std::atomic<bool> g_stop_requested{false};
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr auto kServerSilence = std::chrono::seconds(2);     // then "waiting for server" again
+constexpr auto kServerSilence = std::chrono::seconds(2);         // then "waiting for server" again
 constexpr auto kMouseGazePeriod = std::chrono::milliseconds(8);  // ~120 Hz at most
 
 double millisSince(Clock::time_point t, Clock::time_point now) {
@@ -36,8 +36,7 @@ double millisSince(Clock::time_point t, Clock::time_point now) {
 }
 
 std::int64_t systemMicros() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 
@@ -47,8 +46,7 @@ void initialiseCamera(OrbitCamera& camera, const DecodedFrame& frame) {
   Eigen::Vector3f centre(0.5f, 0.5f, 0.5f);
   if (frame.geometry.has_box) {
     const auto& g = frame.geometry;
-    centre = 0.5f * Eigen::Vector3f(g.box_min.x + g.box_max.x, g.box_min.y + g.box_max.y,
-                                    g.box_min.z + g.box_max.z);
+    centre = 0.5f * Eigen::Vector3f(g.box_min.x + g.box_max.x, g.box_min.y + g.box_max.y, g.box_min.z + g.box_max.z);
   }
   if (frame.has_camera && frame.camera.view_size() == 16 && frame.camera.projection_size() == 16) {
     const Eigen::Map<const Eigen::Matrix4f> view(frame.camera.view().data());
@@ -68,8 +66,8 @@ void initialiseCamera(OrbitCamera& camera, const DecodedFrame& frame) {
 void drawCentredText(const char* text) {
   const ImVec2 size = ImGui::CalcTextSize(text);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::GetForegroundDrawList()->AddText(
-      ImVec2(0.5f * (display.x - size.x), 0.5f * (display.y - size.y)), IM_COL32(230, 230, 230, 255), text);
+  ImGui::GetForegroundDrawList()->AddText(ImVec2(0.5f * (display.x - size.x), 0.5f * (display.y - size.y)),
+                                          IM_COL32(230, 230, 230, 255), text);
 }
 
 }  // namespace
@@ -230,8 +228,8 @@ int runViewer(const ViewerOptions& options) {
 
       if (new_frame) ++frames_shown;
       const bool frames_done = options.frames > 0 && frames_shown >= options.frames;
-      const bool timed_out = options.timeout_s > 0.0 &&
-                             std::chrono::duration<double>(now - started).count() > options.timeout_s;
+      const bool timed_out =
+          options.timeout_s > 0.0 && std::chrono::duration<double>(now - started).count() > options.timeout_s;
       if (!options.snapshot.empty() && (frames_done || timed_out)) {
         RgbaImage image{target.width(), target.height(), target.readPixels()};
         std::string error;
@@ -239,8 +237,8 @@ int runViewer(const ViewerOptions& options) {
           std::fprintf(stderr, "sph_viewer: %s\n", error.c_str());
           exit_code = 4;
         } else {
-          std::fprintf(stderr, "sph_viewer: wrote %s (%dx%d, %d frames)\n", options.snapshot.c_str(),
-                       image.width, image.height, frames_shown);
+          std::fprintf(stderr, "sph_viewer: wrote %s (%dx%d, %d frames)\n", options.snapshot.c_str(), image.width,
+                       image.height, frames_shown);
         }
         snapshot_done = true;
       }
@@ -256,13 +254,14 @@ int runViewer(const ViewerOptions& options) {
       }
       ++renders_since_fps;
       if (now - last_fps_time >= std::chrono::milliseconds(500)) {
-        rates.render_fps = static_cast<float>(renders_since_fps / std::chrono::duration<double>(now - last_fps_time).count());
+        rates.render_fps =
+            static_cast<float>(renders_since_fps / std::chrono::duration<double>(now - last_fps_time).count());
         renders_since_fps = 0;
         last_fps_time = now;
       }
       if (timed_out && exit_code == 0) {
-        std::fprintf(stderr, "sph_viewer: timeout after %.1f s with %d of %d frames\n", options.timeout_s,
-                     frames_shown, options.frames);
+        std::fprintf(stderr, "sph_viewer: timeout after %.1f s with %d of %d frames\n", options.timeout_s, frames_shown,
+                     options.frames);
         exit_code = 3;
       }
       if (snapshot_done || frames_done || timed_out) break;

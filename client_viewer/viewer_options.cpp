@@ -23,15 +23,17 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
       ->capture_default_str();
   app.add_option("--viewer-id", o.viewer_id, "Id sent with every camera pose (default viewer-<pid>)");
   app.add_option("--width", o.width, "Window width in screen coordinates")
-      ->check(CLI::Range(64, 8192))->capture_default_str();
+      ->check(CLI::Range(64, 8192))
+      ->capture_default_str();
   app.add_option("--height", o.height, "Window height in screen coordinates")
-      ->check(CLI::Range(64, 8192))->capture_default_str();
+      ->check(CLI::Range(64, 8192))
+      ->capture_default_str();
   app.add_flag("--mouse-gaze", o.mouse_gaze, "Send the cursor as gaze (source_id \"mouse\")");
   std::array<float, 2> gaze_at{};
-  auto* gaze_at_opt = app.add_option("--gaze-at", gaze_at,
-                                     "Send a fixed gaze point x y (0..1, origin top left) instead of the mouse")
-                          ->check(CLI::Range(0.0f, 1.0f))
-                          ->excludes("--mouse-gaze");
+  auto* gaze_at_opt =
+      app.add_option("--gaze-at", gaze_at, "Send a fixed gaze point x y (0..1, origin top left) instead of the mouse")
+          ->check(CLI::Range(0.0f, 1.0f))
+          ->excludes("--mouse-gaze");
   app.add_flag("!--no-panel", o.panel, "Hide the statistics and control panel");
   app.add_flag("!--no-vsync", o.vsync, "Render as fast as possible instead of at the display rate");
   std::map<std::string, ColourMode> colours{{"class", ColourMode::kSizeClass}, {"speed", ColourMode::kSpeed}};
@@ -42,15 +44,17 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   auto* eye_opt = app.add_option("--eye", eye, "Camera eye x y z (default: the scene's camera)");
   auto* target_opt = app.add_option("--target", target, "Camera target x y z");
   app.add_option("--fov", o.fov_y_degrees, "Vertical field of view, degrees")
-      ->check(CLI::Range(5.0f, 150.0f))->capture_default_str();
+      ->check(CLI::Range(5.0f, 150.0f))
+      ->capture_default_str();
   app.add_option("--snapshot", o.snapshot, "Write the picture to this PNG and exit (hidden window)");
   bool visible_flag = false;
   auto* visible_opt = app.add_flag("--visible", visible_flag, "Show the window even with --snapshot");
   app.add_option("--frames", o.frames, "Server frames to show before the snapshot or exit (0: no limit)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
-  auto* timeout_opt = app.add_option("--timeout", o.timeout_s,
-                                     "Give up after this many seconds (exit 3; default 30 with --snapshot)")
-                          ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  auto* timeout_opt =
+      app.add_option("--timeout", o.timeout_s, "Give up after this many seconds (exit 3; default 30 with --snapshot)")
+          ->check(CLI::NonNegativeNumber);
   app.add_flag("--report", o.report, "Print render rate and frame-arrival-to-pixels times on exit");
   try {
     app.parse(argc, argv);

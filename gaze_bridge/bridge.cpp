@@ -84,8 +84,8 @@ void GazeBridge::logStats(std::int64_t now_ns) {
   const std::int64_t p50 = percentile(interval_latencies_ns_, 0.5);
   const std::int64_t p99 = percentile(interval_latencies_ns_, 0.99);
   spdlog::info("{}: {} | in {:.0f}/s, valid {:.0f}%, out {:.0f}/s{}{} | added latency p50 {:.0f} us, p99 {:.0f} us",
-               source_->id(), source_->connected() ? "connected" : "NOT connected",
-               static_cast<double>(in) / seconds, valid_percent, static_cast<double>(sent) / seconds,
+               source_->id(), source_->connected() ? "connected" : "NOT connected", static_cast<double>(in) / seconds,
+               valid_percent, static_cast<double>(sent) / seconds,
                dropped > 0 ? fmt::format(", {} send drops", dropped) : "", processor_.lost() ? ", gaze LOST" : "",
                static_cast<double>(p50) * 1e-3, static_cast<double>(p99) * 1e-3);
   interval_latencies_ns_.clear();

@@ -19,14 +19,14 @@ namespace gaze_bridge {
 struct BridgeParams {
   ProcessorParams processor;
   PublisherParams publisher;
-  std::string source_id;     // empty: the source's own id()
-  std::string record_path;   // empty: no recording
+  std::string source_id;    // empty: the source's own id()
+  std::string record_path;  // empty: no recording
   double stats_interval_s = 1.0;
 };
 
 struct BridgeCounters {
   std::uint64_t tracker_samples = 0;
-  std::uint64_t sent = 0;        // includes lost samples
+  std::uint64_t sent = 0;  // includes lost samples
   std::uint64_t send_dropped = 0;
   std::uint64_t lost_sent = 0;
 };

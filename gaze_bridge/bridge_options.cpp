@@ -18,10 +18,14 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
   app.add_option("--source-id", o.bridge.source_id, "source_id in every GazeSample (default: the source name)");
 
   app.add_option("--pupil-host", o.pupil.host, "Pupil Capture host")->capture_default_str();
-  app.add_option("--pupil-port", o.pupil.remote_port, "Pupil Remote port")->check(CLI::Range(1, 65535))->capture_default_str();
+  app.add_option("--pupil-port", o.pupil.remote_port, "Pupil Remote port")
+      ->check(CLI::Range(1, 65535))
+      ->capture_default_str();
   app.add_option("--pupil-surface", o.pupil.surface, "Surface name (topic surfaces.<name>)")->capture_default_str();
   app.add_option("--gazepoint-host", o.gazepoint.host, "Gazepoint Control host")->capture_default_str();
-  app.add_option("--gazepoint-port", o.gazepoint.port, "Open Gaze API port")->check(CLI::Range(1, 65535))->capture_default_str();
+  app.add_option("--gazepoint-port", o.gazepoint.port, "Open Gaze API port")
+      ->check(CLI::Range(1, 65535))
+      ->capture_default_str();
   app.add_option("--tracker-timeout", o.tracker_timeout_s, "Seconds of tracker silence before reconnecting")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -32,7 +36,8 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
       ->capture_default_str();
   app.add_flag("--replay-once", o.replay_once, "Stop at the end of the recording instead of looping");
 
-  app.add_option("--synthetic-seed", o.synthetic.seed, "Seed of the synthetic fixation/saccade model")->capture_default_str();
+  app.add_option("--synthetic-seed", o.synthetic.seed, "Seed of the synthetic fixation/saccade model")
+      ->capture_default_str();
   app.add_option("--synthetic-rate", o.synthetic.rate_hz, "Synthetic samples per second")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -46,8 +46,8 @@ bool GazeProcessor::accept(const TrackerSample& sample, ProcessedSample& out) {
     ++counters_.dropped_confidence;
     return false;
   }
-  if (!(std::isfinite(sample.x) && std::isfinite(sample.y) && sample.x >= 0.0 && sample.x <= 1.0 &&
-        sample.y >= 0.0 && sample.y <= 1.0 && std::isfinite(sample.tracker_time_s))) {
+  if (!(std::isfinite(sample.x) && std::isfinite(sample.y) && sample.x >= 0.0 && sample.x <= 1.0 && sample.y >= 0.0 &&
+        sample.y <= 1.0 && std::isfinite(sample.tracker_time_s))) {
     ++counters_.dropped_bad;
     return false;
   }

@@ -18,8 +18,8 @@ namespace gaze_bridge {
 
 struct ProcessorParams {
   double min_confidence = 0.6;
-  double max_gap_s = 0.2;       // longer gaps (bridge clock) are reported as lost
-  double lost_repeat_s = 1.0;   // re-send "lost" this often while it lasts
+  double max_gap_s = 0.2;      // longer gaps (bridge clock) are reported as lost
+  double lost_repeat_s = 1.0;  // re-send "lost" this often while it lasts
   bool filter = true;
   OneEuroParams one_euro;
   bool ivt = false;

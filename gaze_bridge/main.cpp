@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
     zmq::context_t context(1);
     gaze_bridge::GazeBridge bridge(context, gaze_bridge::makeSource(context, options), options.bridge);
     spdlog::info("gaze_bridge: source {}, sending to {} ({}){}", options.source, options.bridge.publisher.endpoint,
-                 options.socket, options.bridge.record_path.empty() ? "" : ", recording to " + options.bridge.record_path);
+                 options.socket,
+                 options.bridge.record_path.empty() ? "" : ", recording to " + options.bridge.record_path);
     bridge.run(g_stop, options.duration_s);
     const auto& c = bridge.counters();
     spdlog::info("gaze_bridge: stopped; {} tracker samples, {} sent, {} lost notices, {} send drops", c.tracker_samples,

@@ -21,7 +21,10 @@ class OpenGazeLineSplitter {
   // The next complete line without its "\r\n" (a bare "\n" also ends a line); false when none.
   bool nextLine(std::string& line);
   std::size_t discarded() const { return discarded_; }
-  void clear() { buffer_.clear(); start_ = 0; }
+  void clear() {
+    buffer_.clear();
+    start_ = 0;
+  }
 
  private:
   std::string buffer_;

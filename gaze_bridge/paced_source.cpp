@@ -49,7 +49,8 @@ void PacedSource::poll(std::vector<TrackerSample>& out, int timeout_ms) {
     if (due > now) {
       if (out.size() > had || due > deadline) {
         // Hand over what is due; otherwise sleep out the timeout.
-        if (out.size() == had) std::this_thread::sleep_for(std::chrono::nanoseconds(std::max<std::int64_t>(deadline - now, 0)));
+        if (out.size() == had)
+          std::this_thread::sleep_for(std::chrono::nanoseconds(std::max<std::int64_t>(deadline - now, 0)));
         return;
       }
       std::this_thread::sleep_for(std::chrono::nanoseconds(due - now));

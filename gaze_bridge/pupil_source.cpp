@@ -30,7 +30,8 @@ void configure(zmq::socket_t& socket) {
 
 PupilSource::PupilSource(zmq::context_t& context, const PupilParams& params)
     : context_(context), params_(params), topic_("surfaces." + params.surface) {
-  if (params_.remote_port < 1 || params_.remote_port > 65535) throw std::invalid_argument("pupil port must be 1..65535");
+  if (params_.remote_port < 1 || params_.remote_port > 65535)
+    throw std::invalid_argument("pupil port must be 1..65535");
   if (params_.surface.empty()) throw std::invalid_argument("pupil surface name must not be empty");
   if (!(std::isfinite(params_.tracker_timeout_s) && params_.tracker_timeout_s > 0.0)) {
     throw std::invalid_argument("tracker timeout must be > 0 s");

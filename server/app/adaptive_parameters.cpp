@@ -24,8 +24,7 @@ const std::map<std::string, double sph::AdaptiveConfig::*>& doubleFields() {
 
 }  // namespace
 
-std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string& name, double value,
-                                 bool& known) {
+std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string& name, double value, bool& known) {
   known = true;
   if (!std::isfinite(value)) return "parameter '" + name + "' is not finite";
   const auto& fields = doubleFields();

@@ -11,8 +11,7 @@ namespace app {
 
 // Sets one AdaptiveConfig field by name (booleans take 0 or 1). Returns "" on success, else why not;
 // `known` is false when the name is not an adaptive setting at all. Does not validate the whole config.
-std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string& name, double value,
-                                 bool& known);
+std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string& name, double value, bool& known);
 // The current values by name.
 void adaptiveParameters(const sph::AdaptiveConfig& config, std::map<std::string, double>& out);
 // Applies every override, then AdaptiveConfig::validate; throws std::invalid_argument naming the first bad one.

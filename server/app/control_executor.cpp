@@ -95,8 +95,7 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
   if (target.fill_counters) target.fill_counters(status);
 }
 
-ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& target,
-                            ControlEffects& effects) {
+ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& target, ControlEffects& effects) {
   ControlReply reply;
   reply.set_protocol_version(gsph::v1::PROTOCOL_VERSION_CURRENT);
   reply.set_request_id(request.request_id());

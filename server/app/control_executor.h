@@ -13,7 +13,7 @@ namespace app {
 // Run settings that control requests may change (besides the session itself).
 struct RunSettings {
   bool paused = false;
-  bool free_run = false;   // step as fast as possible instead of following wall time
+  bool free_run = false;  // step as fast as possible instead of following wall time
   double publish_hz = 60.0;
   bool quantized = false;  // POSITION_ENCODING_QUANTIZED16 instead of FLOAT32
 };
@@ -33,8 +33,7 @@ struct ControlEffects {
   bool restart_clock = false;
 };
 
-gsph::v1::ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& target,
-                                      ControlEffects& effects);
+gsph::v1::ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& target, ControlEffects& effects);
 
 // The full status: session state, settings, current parameter values and the counters.
 void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status);

@@ -1,7 +1,7 @@
 // sph_server: loads a scene, runs an SPH method in real time (or free-run), publishes frames and takes
 // gaze, camera poses and control requests over ZeroMQ. See server/app/README.md.
-#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include <csignal>
 #include <ctime>
@@ -18,7 +18,7 @@ namespace {
 
 struct CliOptions {
   app::ServerOptions server;
-  std::string method;  // empty: the scene's default method
+  std::string method;                  // empty: the scene's default method
   std::map<std::string, double> gaze;  // --gaze-* options given
   std::vector<std::string> adaptive;   // --adaptive name=value
   std::string gaze_socket = "sub";
@@ -30,40 +30,42 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   app::SimLoopOptions& sim = o.server.sim;
   net::Endpoints& ep = o.server.net.endpoints;
   sim.scene_dir = scene::defaultSceneDir();
-  cli.add_option("--scene", sim.scene, "scene name in --scene-dir, or a path to a scene file")
-      ->capture_default_str();
-  cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")
-      ->capture_default_str();
+  cli.add_option("--scene", sim.scene, "scene name in --scene-dir, or a path to a scene file")->capture_default_str();
+  cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")->capture_default_str();
   cli.add_option("--method", o.method, "regular, surface, gaze or hybrid (default: the scene's method)")
       ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
   cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
   cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
-      ->check(CLI::Range(1e-3, app::kMaxPublishHz))->capture_default_str();
+      ->check(CLI::Range(1e-3, app::kMaxPublishHz))
+      ->capture_default_str();
   cli.add_flag("--quantized", sim.settings.quantized, "16-bit positions relative to the box (6 bytes per particle)");
   cli.add_flag("--velocities", sim.velocities, "add velocities (3 float32) to every frame");
-  cli.add_option("--threads", sim.threads, "OpenMP threads for the step")->check(CLI::Range(1, 256))
+  cli.add_option("--threads", sim.threads, "OpenMP threads for the step")
+      ->check(CLI::Range(1, 256))
       ->capture_default_str();
   cli.add_option("--max-steps", sim.max_steps, "stop after this many steps (0: run until SIGINT/SIGTERM)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cli.add_option("--frames-endpoint", ep.frames, "XPUB: frames out")->capture_default_str();
   cli.add_option("--gaze-endpoint", ep.gaze, "GazeSample in")->capture_default_str();
   cli.add_option("--pose-endpoint", ep.pose, "CameraPose in")->capture_default_str();
-  cli.add_option("--control-endpoint", ep.control, "ROUTER: Control in, ControlReply out")
-      ->capture_default_str();
+  cli.add_option("--control-endpoint", ep.control, "ROUTER: Control in, ControlReply out")->capture_default_str();
   cli.add_option("--gaze-socket", o.gaze_socket, "sub (senders connect PUB) or pull (senders connect PUSH)")
-      ->check(CLI::IsMember({"sub", "pull"}))->capture_default_str();
+      ->check(CLI::IsMember({"sub", "pull"}))
+      ->capture_default_str();
   cli.add_option("--pose-socket", o.pose_socket, "sub or pull, as --gaze-socket")
-      ->check(CLI::IsMember({"sub", "pull"}))->capture_default_str();
+      ->check(CLI::IsMember({"sub", "pull"}))
+      ->capture_default_str();
   cli.add_option("--camera-source", sim.camera_source,
                  "viewer_id whose camera pose drives the gaze projection (default: the most recent pose)");
   // Adaptive settings override the scene's "adaptive" block (defaults shown are the library's).
   const sph::AdaptiveConfig defaults;
   const auto gaze_option = [&](const char* flag, const char* name, double fallback, const char* help) {
-    cli.add_option_function<double>(flag, [&o, name](double v) { o.gaze[name] = v; }, help)
+    cli.add_option_function<double>(
+           flag, [&o, name](double v) { o.gaze[name] = v; }, help)
         ->default_str(std::to_string(fallback));
   };
-  gaze_option("--gaze-radius", "gaze_radius", defaults.gaze_radius,
-              "gaze circle radius, fraction of viewport width");
+  gaze_option("--gaze-radius", "gaze_radius", defaults.gaze_radius, "gaze circle radius, fraction of viewport width");
   gaze_option("--gaze-ring-radius", "gaze_ring_radius", defaults.gaze_ring_radius,
               "outer radius of the hysteresis ring, same units");
   gaze_option("--gaze-stale-s", "gaze_stale_s", defaults.gaze_stale_s,
@@ -74,9 +76,11 @@ void addOptions(CLI::App& cli, CliOptions& o) {
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
                  "surface_includes_walls, gaze_*); repeatable");
   cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
-      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))->capture_default_str();
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))
+      ->capture_default_str();
 }
 
 }  // namespace
@@ -126,9 +130,8 @@ int main(int argc, char** argv) {
     spdlog::info("endpoint gaze {}", ep.gaze);
     spdlog::info("endpoint pose {}", ep.pose);
     spdlog::info("endpoint control {}", ep.control);
-    spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene,
-                 o.method.empty() ? "(scene default)" : o.method, o.server.sim.settings.publish_hz,
-                 o.server.sim.settings.free_run ? "free-run" : "real time");
+    spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene, o.method.empty() ? "(scene default)" : o.method,
+                 o.server.sim.settings.publish_hz, o.server.sim.settings.free_run ? "free-run" : "real time");
     server.start();
     const timespec poll_interval{0, 100'000'000};
     int signal = 0;

@@ -17,8 +17,8 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <random>
+#include <sstream>
 #include <thread>
 
 #include "app/server.h"
@@ -46,8 +46,7 @@ app::ServerOptions benchOptions(sph::Method method, int scene = 0) {
 }
 
 std::int64_t nowUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 
@@ -121,8 +120,7 @@ void EncodePublish(benchmark::State& state) {
   omp_set_num_threads(kThreads);
   sph::Simulation sim(scene::loadScene("dambreak"), sph::SizeClass::Small);
   for (int i = 0; i < 5; ++i) sim.step();
-  net::FrameEncoder encoder(state.range(0) == 0 ? net::PositionEncoding::Float32
-                                                : net::PositionEncoding::Quantized16);
+  net::FrameEncoder encoder(state.range(0) == 0 ? net::PositionEncoding::Float32 : net::PositionEncoding::Quantized16);
   zmq::context_t ctx;
   zmq::socket_t pub(ctx, zmq::socket_type::xpub);
   pub.set(zmq::sockopt::linger, 0);
@@ -187,12 +185,13 @@ void GazeToRefinedFrame(benchmark::State& state) {
       // Refined by it: the step used this sample's point (tracking, or holding it when the step
       // came later than gaze_stale_s after its arrival).
       while (!seen && std::chrono::steady_clock::now() - sent < std::chrono::seconds(1)) {
-        seen = receive(200) && frame.gaze().sample_sequence() >= sequence &&
-               (frame.gaze().mode() == gsph::v1::GAZE_MODE_TRACKING ||
-                frame.gaze().mode() == gsph::v1::GAZE_MODE_HOLDING);
+        seen =
+            receive(200) && frame.gaze().sample_sequence() >= sequence &&
+            (frame.gaze().mode() == gsph::v1::GAZE_MODE_TRACKING || frame.gaze().mode() == gsph::v1::GAZE_MODE_HOLDING);
       }
       if (seen && k >= 0) {
-        latencies_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
+        latencies_ms.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
       }
       // A random phase against the step and frame clocks, as a tracker's samples have.
       const auto pause = std::chrono::milliseconds(5 + rng() % 30);
@@ -255,7 +254,8 @@ void StepRate(benchmark::State& state) {
   server->stop();
 }
 // Alternating runs, so a change in the machine's load hits both configurations alike.
-BENCHMARK(StepRate)->Arg(0)->Arg(8)->Arg(0)->Arg(8)->Arg(0)->Arg(8)->Iterations(1)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(StepRate)->Arg(0)->Arg(8)->Arg(0)->Arg(8)->Arg(0)->Arg(8)->Iterations(1)->UseManualTime()->Unit(
+    benchmark::kMillisecond);
 
 }  // namespace
 

@@ -6,10 +6,10 @@
 namespace app {
 
 void routeProtobufLogs() {
-  google::protobuf::SetLogHandler([](google::protobuf::LogLevel, const char* file, int line,
-                                     const std::string& message) {
-    spdlog::debug("protobuf {}:{}: {}", file, line, message);
-  });
+  google::protobuf::SetLogHandler(
+      [](google::protobuf::LogLevel, const char* file, int line, const std::string& message) {
+        spdlog::debug("protobuf {}:{}: {}", file, line, message);
+      });
 }
 
 Server::Server(const ServerOptions& options) : context_(1) {

@@ -29,12 +29,10 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
       net_(net),
       rejections_(rejections),
       outbox_(context, net.framePipe(), net.replyPipe()),
-      encoder_(options.settings.quantized ? net::PositionEncoding::Quantized16
-                                          : net::PositionEncoding::Float32,
+      encoder_(options.settings.quantized ? net::PositionEncoding::Quantized16 : net::PositionEncoding::Float32,
                options.velocities),
       settings_(options.settings),
-      session_(options.scene_dir, options.adaptive_overrides,
-               [this](sph::AdaptiveController& c) { feedGaze(c); }),
+      session_(options.scene_dir, options.adaptive_overrides, [this](sph::AdaptiveController& c) { feedGaze(c); }),
       control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }} {
   session_.load(options.scene, options.method, /*allow_paths=*/true);
   net::fromScreenCamera(session_.camera(), camera_msg_);
@@ -180,8 +178,7 @@ void SimLoop::publish() {
     info.gaze = gaze_echo_;
   }
   info.camera = &camera_msg_;
-  encoder_.setEncoding(settings_.quantized ? net::PositionEncoding::Quantized16
-                                           : net::PositionEncoding::Float32);
+  encoder_.setEncoding(settings_.quantized ? net::PositionEncoding::Quantized16 : net::PositionEncoding::Float32);
   encoder_.encode(session_.sim(), info);
   // Sequence numbers count frames offered; one the pipe drops shows up as a gap, as any drop does.
   ++frame_sequence_;
@@ -208,16 +205,16 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
   net::GazeArrival gaze;
   std::string gaze_text = "no gaze";
   if (mailbox_.latestGaze(gaze)) {
-    gaze_text = fmt::format("gaze age {:.0f} ms",
-                            std::chrono::duration<double, std::milli>(now - gaze.arrived).count());
+    gaze_text =
+        fmt::format("gaze age {:.0f} ms", std::chrono::duration<double, std::milli>(now - gaze.arrived).count());
   }
   std::string line = fmt::format(
       "{} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small), {} subscribers, "
       "{}, {} frames sent, {} dropped, {} inputs rejected",
-      session_.scene().name, sph::methodName(session_.method()), session_.sim().stepCount(),
-      session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(),
-      p.size(), large, p.size() - large, net_.counters().subscriptions.load(), gaze_text,
-      counters_.frames_published.load(), counters_.frames_dropped.load(), rejections_.total());
+      session_.scene().name, sph::methodName(session_.method()), session_.sim().stepCount(), session_.sim().time(),
+      settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large, p.size() - large,
+      net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
+      counters_.frames_dropped.load(), rejections_.total());
   std::lock_guard lock(status_mutex_);
   status_line_ = std::move(line);
 }
@@ -231,10 +228,10 @@ void SimLoop::fillCounters(gsph::v1::ServerStatus& status) const {
   status.set_steps_per_second(counters_.steps_per_second.load());
   status.set_subscribers(static_cast<std::uint32_t>(std::max<std::int64_t>(0, net_.counters().subscriptions.load())));
   net::GazeArrival gaze;
-  status.set_gaze_age_ms(mailbox_.latestGaze(gaze)
-                             ? static_cast<float>(std::chrono::duration<double, std::milli>(
-                                                      Clock::now() - gaze.arrived).count())
-                             : -1.0f);
+  status.set_gaze_age_ms(
+      mailbox_.latestGaze(gaze)
+          ? static_cast<float>(std::chrono::duration<double, std::milli>(Clock::now() - gaze.arrived).count())
+          : -1.0f);
   status.set_frames_published(counters_.frames_published.load());
   status.set_inputs_rejected(rejections_.total());
 }

@@ -8,8 +8,8 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -32,9 +32,9 @@ struct SimLoopOptions {
   RunSettings settings;
   bool velocities = false;
   int threads = 2;
-  std::string camera_source;        // empty: the most recent pose from any viewer
-  std::int64_t max_steps = 0;       // stop after this many steps (0: run until stopped)
-  double status_interval_s = 5.0;   // periodic one-line status (0: off)
+  std::string camera_source;       // empty: the most recent pose from any viewer
+  std::int64_t max_steps = 0;      // stop after this many steps (0: run until stopped)
+  double status_interval_s = 5.0;  // periodic one-line status (0: off)
 };
 
 // Counters the status line, the control replies and the tests read from other threads.
@@ -48,8 +48,8 @@ struct SimCounters {
 class SimLoop {
  public:
   // Loads the scene (throws when it cannot) in the calling thread.
-  SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::InputMailbox& mailbox,
-          const net::NetLoop& net, const net::RejectionLog& rejections);
+  SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::InputMailbox& mailbox, const net::NetLoop& net,
+          const net::RejectionLog& rejections);
   ~SimLoop();
   SimLoop(const SimLoop&) = delete;
   SimLoop& operator=(const SimLoop&) = delete;

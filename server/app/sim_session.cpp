@@ -26,8 +26,7 @@ class FedAdaptiveStep : public sph::AdaptiveStep {
 
 }  // namespace
 
-SimSession::SimSession(std::string scene_dir, std::map<std::string, double> overrides,
-                       BeforeAdaptiveStep before)
+SimSession::SimSession(std::string scene_dir, std::map<std::string, double> overrides, BeforeAdaptiveStep before)
     : scene_dir_(std::move(scene_dir)), overrides_(std::move(overrides)), before_(std::move(before)) {}
 
 void SimSession::load(const std::string& scene_name, std::optional<sph::Method> method, bool allow_paths) {

@@ -40,8 +40,7 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
   };
   const std::vector<Row> rows = {
       {"Neighbour search (ms)", [](const RunSummary& r) { return fixed(r.summary.neighbor.mean, 3); }},
-      {"Density & Pressure (ms)",
-       [](const RunSummary& r) { return fixed(r.summary.density_pressure.mean, 3); }},
+      {"Density & Pressure (ms)", [](const RunSummary& r) { return fixed(r.summary.density_pressure.mean, 3); }},
       {"Acceleration, Integration & Collision (ms)",
        [](const RunSummary& r) { return fixed(r.summary.accel_integrate_collide.mean, 3); }},
       {"Adaptive step (ms)", [](const RunSummary& r) { return fixed(r.summary.adaptive.mean, 3); }},
@@ -60,9 +59,7 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
        }},
       {"Steps per second", [](const RunSummary& r) { return fixed(r.summary.steps_per_s, 1); }},
       {"Mean LARGE / SMALL",
-       [](const RunSummary& r) {
-         return fixed(r.summary.mean_large, 0) + " / " + fixed(r.summary.mean_small, 0);
-       }},
+       [](const RunSummary& r) { return fixed(r.summary.mean_large, 0) + " / " + fixed(r.summary.mean_small, 0); }},
       {"Mean neighbours", [](const RunSummary& r) { return fixed(r.summary.mean_neighbors, 1); }},
       {"rho/rho0 mean / max",
        [](const RunSummary& r) {
@@ -77,8 +74,9 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
   };
 
   std::string md = "# Methods compared (thesis table 5.x layout)\n\n";
-  md += "Mean milliseconds per step and phase; the neighbour search is shown on its own (the thesis "
-        "folds it into the density row).\n";
+  md +=
+      "Mean milliseconds per step and phase; the neighbour search is shown on its own (the thesis "
+      "folds it into the density row).\n";
   for (const std::string& scene : scenes) {
     md += "\n## ";
     md += scene;

@@ -42,16 +42,14 @@ int main(int argc, char** argv) {
   int threads = 2;
   int export_every = 0;
   int interleave = 10;
-  app.add_option("--scene", scene_arg, "scene name, path to a .json file, comma list, or 'all'")
-      ->capture_default_str();
+  app.add_option("--scene", scene_arg, "scene name, path to a .json file, comma list, or 'all'")->capture_default_str();
   app.add_option("--method", method_arg,
                  "regular, surface, gaze, hybrid, a comma list, or 'all' (default: each scene's own)");
   app.add_option("--gaze", gaze_path,
                  "gaze recording (CSV: time_s,x,y,valid) replayed for gaze and hybrid, instead of "
                  "the scene's own")
       ->check(CLI::ExistingFile);
-  app.add_option("--frames", frames, "frames (steps) to run; 0 = the scene's own count")
-      ->check(CLI::NonNegativeNumber);
+  app.add_option("--frames", frames, "frames (steps) to run; 0 = the scene's own count")->check(CLI::NonNegativeNumber);
   app.add_option("--threads", threads, "OpenMP threads")->check(CLI::Range(1, 256))->capture_default_str();
   app.add_option("--out", out_dir, "output folder (one subfolder per scene/method when several)")
       ->capture_default_str();
@@ -92,11 +90,10 @@ int main(int argc, char** argv) {
         ++runs;
         if (bench::methodNeedsGaze(m) && !override_gaze && !scene_gaze.contains(sc.name)) {
           if (sc.gaze_recording.empty()) {
-            throw std::invalid_argument("scene '" + sc.name + "' names no gaze_recording for method '" +
-                                        m + "': pass --gaze FILE");
+            throw std::invalid_argument("scene '" + sc.name + "' names no gaze_recording for method '" + m +
+                                        "': pass --gaze FILE");
           }
-          scene_gaze[sc.name] =
-              std::make_shared<gaze::GazeRecording>(gaze::readGazeRecording(sc.gaze_recording));
+          scene_gaze[sc.name] = std::make_shared<gaze::GazeRecording>(gaze::readGazeRecording(sc.gaze_recording));
         }
       }
     }
@@ -129,8 +126,8 @@ int main(int argc, char** argv) {
           options.gaze = override_gaze ? override_gaze.get() : scene_gaze.at(sc.name).get();
         }
         sl.last_print = std::chrono::steady_clock::now();
-        options.on_frame = [&sl, &sc, &export_format, format, export_every, total_frames](
-                               const sph::Simulation& sim, const bench::FrameRecord& r) {
+        options.on_frame = [&sl, &sc, &export_format, format, export_every, total_frames](const sph::Simulation& sim,
+                                                                                          const bench::FrameRecord& r) {
           sl.total_ms += r.ms.total_ms;
           if (export_every > 0 && r.frame % export_every == 0) {
             char name[64];
@@ -140,9 +137,9 @@ int main(int argc, char** argv) {
           const auto now = std::chrono::steady_clock::now();
           if (now - sl.last_print > std::chrono::seconds(1) || r.frame == total_frames) {
             sl.last_print = now;
-            std::fprintf(stderr, "[%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n",
-                         sc.name.c_str(), sl.method.c_str(), r.frame, total_frames, r.sim_time,
-                         sl.total_ms / r.frame, r.n_large + r.n_small);
+            std::fprintf(stderr, "[%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n", sc.name.c_str(),
+                         sl.method.c_str(), r.frame, total_frames, r.sim_time, sl.total_ms / r.frame,
+                         r.n_large + r.n_small);
           }
         };
         sl.run = std::make_unique<bench::SceneRun>(sc, method, options);

@@ -82,8 +82,8 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["max_density_over_rho0"] = s.max_density_ratio;
   j["total_mass_start"] = run.mass_start;
   j["total_mass_end"] = run.mass_end;
-  j["nan_values"] = s.nan_values;                // summed over all frames
-  j["particles_outside_box"] = s.outside_box;    // summed over all frames
+  j["nan_values"] = s.nan_values;              // summed over all frames
+  j["particles_outside_box"] = s.outside_box;  // summed over all frames
   openOut(path) << j.dump(2) << "\n";
 }
 
@@ -95,12 +95,11 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
   char line[512];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
-    std::snprintf(line, sizeof line,
-                  "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d\n", r.frame,
-                  r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
-                  r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s,
-                  r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
-                  sph::gazeModeName(r.gaze_mode), r.merge_unpaired);
+    std::snprintf(line, sizeof line, "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d\n",
+                  r.frame, r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
+                  r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s, r.mean_neighbors,
+                  r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges, sph::gazeModeName(r.gaze_mode),
+                  r.merge_unpaired);
     out << line;
   }
 }
@@ -113,10 +112,9 @@ std::string summaryText(const RunResult& run, const Summary& s) {
                 "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
                 "NaN %zu, outside %zu | other load: %s",
                 run.scene.c_str(), run.method.c_str(), run.frames, run.threads, s.neighbor.mean,
-                s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean,
-                s.total.p95, s.steps_per_s, s.mean_large, s.mean_small, s.mean_neighbors,
-                s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values,
-                s.outside_box, describe(run.machine_load).c_str());
+                s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean, s.total.p95,
+                s.steps_per_s, s.mean_large, s.mean_small, s.mean_neighbors, s.mean_density_ratio, s.max_density_ratio,
+                run.mass_start, run.mass_end, s.nan_values, s.outside_box, describe(run.machine_load).c_str());
   return buf;
 }
 
@@ -128,8 +126,8 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
     for (std::size_t i = 0; i < n; ++i) {
       const auto& x = p.position[i];
       const auto& u = p.velocity[i];
-      out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ','
-          << u.z() << ',' << p.density[i] << ',' << sph::sizeClassName(p.size_class[i]) << '\n';
+      out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ',' << u.z()
+          << ',' << p.density[i] << ',' << sph::sizeClassName(p.size_class[i]) << '\n';
     }
     return;
   }

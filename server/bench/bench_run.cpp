@@ -4,9 +4,9 @@
 #include "sph/camera.h"
 #include "sph/omp_wait.h"
 
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
-#include <omp.h>
 #include <stdexcept>
 
 namespace bench {
@@ -61,8 +61,7 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   r.mean_neighbors = sim.grid().meanNeighbors();
 }
 
-SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const RunOptions& options)
-    : options_(options) {
+SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const RunOptions& options) : options_(options) {
   requireKnownMethod(method);
   if (options.threads < 1) throw std::invalid_argument("threads must be >= 1");
   omp_set_num_threads(options.threads);
@@ -71,8 +70,8 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   sph::methodByName(method, m);
   needs_gaze_ = sph::usesGaze(m);
   if (needs_gaze_ && (options.gaze == nullptr || options.gaze->samples.empty())) {
-    throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" +
-                                scene.name + "' names none; pass --gaze FILE)");
+    throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" + scene.name +
+                                "' names none; pass --gaze FILE)");
   }
   sim_ = std::make_unique<sph::Simulation>(scene, sph::startClass(m));
   auto adaptive = sph::makeAdaptiveController(m, scene.adaptive, sph::cameraFromSpec(scene.camera));

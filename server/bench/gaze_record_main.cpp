@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <utility>
 #include <vector>
-#include <filesystem>
 
 #include "gaze/fixation_model.h"
 #include "gaze/gaze_recording.h"
@@ -39,8 +39,7 @@ void waterOnScreen(const sph::Scene& scene, gaze::FixationModelParams& params) {
   const sph::Projector projector(sph::cameraFromSpec(scene.camera));
   double x0 = 1.0, y0 = 1.0, x1 = 0.0, y1 = 0.0;
   for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p((corner & 1) ? wet.max.x() : wet.min.x(),
-                            (corner & 2) ? wet.max.y() : wet.min.y(),
+    const Eigen::Vector3d p((corner & 1) ? wet.max.x() : wet.min.x(), (corner & 2) ? wet.max.y() : wet.min.y(),
                             (corner & 4) ? wet.max.z() : wet.min.z());
     const sph::ScreenDisc d = projector.project(p, 0.0);
     if (!d.in_front) continue;
@@ -65,20 +64,17 @@ void waterOnScreen(const sph::Scene& scene, gaze::FixationModelParams& params) {
 // every `interval_s` of simulated time over the scene's run.
 class WaterOnScreen {
  public:
-  WaterOnScreen(const sph::Scene& scene, double interval_s, std::size_t per_snapshot)
-      : interval_s_(interval_s) {
+  WaterOnScreen(const sph::Scene& scene, double interval_s, std::size_t per_snapshot) : interval_s_(interval_s) {
     sph::Simulation sim(scene, sph::SizeClass::Large);
     const sph::Projector projector(sph::cameraFromSpec(scene.camera));
-    const int steps_per_snapshot =
-        std::max(1, static_cast<int>(std::lround(interval_s / scene.params.time_step)));
+    const int steps_per_snapshot = std::max(1, static_cast<int>(std::lround(interval_s / scene.params.time_step)));
     for (int step = 0; step <= scene.frames; ++step) {
       if (step % steps_per_snapshot == 0) {
         std::vector<std::pair<double, double>> points;
         const std::size_t n = sim.particles().size();
         const std::size_t stride = std::max<std::size_t>(1, n / per_snapshot);
         for (std::size_t i = 0; i < n; i += stride) {
-          const sph::ScreenDisc d =
-              projector.project(sim.particles().position[i].cast<double>(), 0.0);
+          const sph::ScreenDisc d = projector.project(sim.particles().position[i].cast<double>(), 0.0);
           if (d.in_front && d.x >= 0.0 && d.x <= 1.0 && d.y >= 0.0 && d.y <= 1.0) {
             points.emplace_back(d.x, d.y);
           }
@@ -91,8 +87,8 @@ class WaterOnScreen {
 
   bool pick(double time_s, double u, double& x, double& y) const {
     if (snapshots_.empty()) return false;
-    const auto k = std::min<std::size_t>(snapshots_.size() - 1,
-                                         static_cast<std::size_t>(std::max(0.0, time_s) / interval_s_));
+    const auto k =
+        std::min<std::size_t>(snapshots_.size() - 1, static_cast<std::size_t>(std::max(0.0, time_s) / interval_s_));
     const auto& points = snapshots_[k];
     if (points.empty()) return false;
     const auto& p = points[std::min(points.size() - 1, static_cast<std::size_t>(u * points.size()))];
@@ -134,18 +130,16 @@ int main(int argc, char** argv) {
       params.blink_probability = blink_probability;
       waterOnScreen(sc, params);
       const WaterOnScreen water(sc, 0.1, 2000);
-      params.pick_target = [&water](double t, double u, double& x, double& y) {
-        return water.pick(t, u, x, y);
-      };
+      params.pick_target = [&water](double t, double u, double& x, double& y) { return water.pick(t, u, x, y); };
       // The whole run plus a second, so the recording covers it without looping.
       const double seconds = sc.frames * sc.params.time_step + 1.0;
       const gaze::GazeRecording rec = gaze::synthesizeRecording(params, seconds);
       const std::filesystem::path dir(out_dir.empty() ? scene_dir : out_dir);
       const std::filesystem::path path = dir / (sc.name + ".gaze.csv");
       gaze::writeGazeRecording(path.string(), rec);
-      std::printf("%s: %zu samples, %.1f s, targets in x [%.3f, %.3f] y [%.3f, %.3f] -> %s\n",
-                  sc.name.c_str(), rec.samples.size(), rec.duration(), params.region_x0,
-                  params.region_x1, params.region_y0, params.region_y1, path.string().c_str());
+      std::printf("%s: %zu samples, %.1f s, targets in x [%.3f, %.3f] y [%.3f, %.3f] -> %s\n", sc.name.c_str(),
+                  rec.samples.size(), rec.duration(), params.region_x0, params.region_x1, params.region_y0,
+                  params.region_y1, path.string().c_str());
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph_gaze_record: error: %s\n", e.what());

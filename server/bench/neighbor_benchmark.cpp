@@ -78,8 +78,8 @@ BENCHMARK(BM_Bin)->Apply(stateArgs);
 
 using DensityStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&,
                               sph::ParticleSet&);
-using ForceStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&,
-                            sph::ParticleSet&, bool);
+using ForceStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&, sph::ParticleSet&,
+                            bool);
 
 template <DensityStage Stage>
 void BM_Density(benchmark::State& state) {

@@ -56,8 +56,7 @@ double PortableRandom::normal() {
   return u * factor;
 }
 
-FixationSaccadeModel::FixationSaccadeModel(const FixationModelParams& params)
-    : params_(params), random_(params.seed) {
+FixationSaccadeModel::FixationSaccadeModel(const FixationModelParams& params) : params_(params), random_(params.seed) {
   validateFixationModelParams(params_);
 }
 

@@ -76,8 +76,8 @@ std::string checkGazePoint(const GazePoint& point, const GazePoint* previous) {
     return "valid sample outside [0, 1]: x=" + formatDouble(point.x) + " y=" + formatDouble(point.y);
   }
   if (previous != nullptr && !(point.time_s > previous->time_s)) {
-    return "time_s " + formatDouble(point.time_s) + " does not increase (previous " +
-           formatDouble(previous->time_s) + ")";
+    return "time_s " + formatDouble(point.time_s) + " does not increase (previous " + formatDouble(previous->time_s) +
+           ")";
   }
   return {};
 }
@@ -121,8 +121,7 @@ GazeRecording readGazeRecording(const std::string& path) {
     } else {
       fail(path, line_number, "valid must be 0 or 1, got '" + std::string(valid) + "'");
     }
-    const std::string problem =
-        checkGazePoint(point, recording.samples.empty() ? nullptr : &recording.samples.back());
+    const std::string problem = checkGazePoint(point, recording.samples.empty() ? nullptr : &recording.samples.back());
     if (!problem.empty()) fail(path, line_number, problem);
     recording.samples.push_back(point);
   }
@@ -136,8 +135,7 @@ void writeGazeRecording(const std::string& path, const GazeRecording& recording)
   // Validate everything first so a bad recording leaves no file behind.
   if (recording.samples.empty()) throw GazeFormatError(path + ": recording has no samples");
   for (std::size_t i = 0; i < recording.samples.size(); ++i) {
-    const std::string problem =
-        checkGazePoint(recording.samples[i], i == 0 ? nullptr : &recording.samples[i - 1]);
+    const std::string problem = checkGazePoint(recording.samples[i], i == 0 ? nullptr : &recording.samples[i - 1]);
     if (!problem.empty()) throw GazeFormatError(path + ": sample " + std::to_string(i) + ": " + problem);
   }
   std::ostringstream text;

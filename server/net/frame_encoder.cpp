@@ -25,8 +25,7 @@ void setVec3(gsph::v1::Vec3* out, float x, float y, float z) {
 }
 
 std::int64_t systemTimeUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 
@@ -56,30 +55,47 @@ void encodeGeometry(const sph::Simulation& sim, gsph::v1::Geometry* g) {
 
 gsph::v1::Method toProtoMethod(sph::Method m) {
   switch (m) {
-    case sph::Method::Regular: return gsph::v1::METHOD_REGULAR;
-    case sph::Method::Surface: return gsph::v1::METHOD_SURFACE;
-    case sph::Method::Gaze: return gsph::v1::METHOD_GAZE;
-    case sph::Method::Hybrid: return gsph::v1::METHOD_HYBRID;
+    case sph::Method::Regular:
+      return gsph::v1::METHOD_REGULAR;
+    case sph::Method::Surface:
+      return gsph::v1::METHOD_SURFACE;
+    case sph::Method::Gaze:
+      return gsph::v1::METHOD_GAZE;
+    case sph::Method::Hybrid:
+      return gsph::v1::METHOD_HYBRID;
   }
   return gsph::v1::METHOD_UNSPECIFIED;
 }
 
 bool fromProtoMethod(int value, sph::Method& out) {
   switch (value) {
-    case gsph::v1::METHOD_REGULAR: out = sph::Method::Regular; return true;
-    case gsph::v1::METHOD_SURFACE: out = sph::Method::Surface; return true;
-    case gsph::v1::METHOD_GAZE: out = sph::Method::Gaze; return true;
-    case gsph::v1::METHOD_HYBRID: out = sph::Method::Hybrid; return true;
-    default: return false;
+    case gsph::v1::METHOD_REGULAR:
+      out = sph::Method::Regular;
+      return true;
+    case gsph::v1::METHOD_SURFACE:
+      out = sph::Method::Surface;
+      return true;
+    case gsph::v1::METHOD_GAZE:
+      out = sph::Method::Gaze;
+      return true;
+    case gsph::v1::METHOD_HYBRID:
+      out = sph::Method::Hybrid;
+      return true;
+    default:
+      return false;
   }
 }
 
 gsph::v1::GazeMode toProtoGazeMode(sph::GazeMode m) {
   switch (m) {
-    case sph::GazeMode::None: return gsph::v1::GAZE_MODE_NONE;
-    case sph::GazeMode::Tracking: return gsph::v1::GAZE_MODE_TRACKING;
-    case sph::GazeMode::Holding: return gsph::v1::GAZE_MODE_HOLDING;
-    case sph::GazeMode::Fallback: return gsph::v1::GAZE_MODE_FALLBACK;
+    case sph::GazeMode::None:
+      return gsph::v1::GAZE_MODE_NONE;
+    case sph::GazeMode::Tracking:
+      return gsph::v1::GAZE_MODE_TRACKING;
+    case sph::GazeMode::Holding:
+      return gsph::v1::GAZE_MODE_HOLDING;
+    case sph::GazeMode::Fallback:
+      return gsph::v1::GAZE_MODE_FALLBACK;
   }
   return gsph::v1::GAZE_MODE_UNSPECIFIED;
 }

@@ -47,8 +47,7 @@ gsph::v1::GazeMode toProtoGazeMode(sph::GazeMode m);
 
 class FrameEncoder {
  public:
-  explicit FrameEncoder(PositionEncoding encoding = PositionEncoding::Float32,
-                        bool velocities = false)
+  explicit FrameEncoder(PositionEncoding encoding = PositionEncoding::Float32, bool velocities = false)
       : encoding_(encoding), velocities_(velocities) {}
 
   void setEncoding(PositionEncoding encoding) { encoding_ = encoding; }

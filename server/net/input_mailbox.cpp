@@ -20,9 +20,8 @@ void InputMailbox::putPose(const PoseArrival& pose) {
   std::lock_guard lock(mutex_);
   if (poses_.size() >= kMaxViewers && poses_.count(pose.viewer_id) == 0) {
     // Forget the viewer that has been quiet longest so a churn of viewer ids cannot grow the map.
-    auto oldest = std::min_element(poses_.begin(), poses_.end(), [](const auto& a, const auto& b) {
-      return a.second.arrived < b.second.arrived;
-    });
+    auto oldest = std::min_element(poses_.begin(), poses_.end(),
+                                   [](const auto& a, const auto& b) { return a.second.arrived < b.second.arrived; });
     poses_.erase(oldest);
   }
   poses_[pose.viewer_id] = pose;

@@ -22,8 +22,7 @@ std::atomic<int> next_pipe_id{0};
 // Receives one whole message without waiting; false when none is queued. Keeps at most `max_parts`
 // parts; `overflow` tells that more arrived (they are read and dropped). The parts of a message
 // arrive together, so reading the rest never waits.
-bool receiveWhole(zmq::socket_t& socket, std::vector<zmq::message_t>& parts, std::size_t max_parts,
-                  bool& overflow) {
+bool receiveWhole(zmq::socket_t& socket, std::vector<zmq::message_t>& parts, std::size_t max_parts, bool& overflow) {
   parts.clear();
   overflow = false;
   zmq::message_t first;
@@ -45,8 +44,7 @@ bool receiveWhole(zmq::socket_t& socket, std::vector<zmq::message_t>& parts, std
 
 // A gaze or pose message is one part (the payload) or two (a topic frame, then the payload), so
 // senders may use PUB topics in the Pupil style. Returns nullptr and a reason otherwise.
-const zmq::message_t* payloadOf(const std::vector<zmq::message_t>& parts, bool overflow,
-                                std::string& reason) {
+const zmq::message_t* payloadOf(const std::vector<zmq::message_t>& parts, bool overflow, std::string& reason) {
   if (overflow || parts.size() > 2) {
     reason = "more than two message parts";
     return nullptr;
@@ -78,8 +76,7 @@ bool inputSocketTypeByName(const std::string& name, InputSocketType& out) {
   return true;
 }
 
-NetLoop::NetLoop(zmq::context_t& context, const NetConfig& config, InputMailbox& mailbox,
-                 RejectionLog& rejections)
+NetLoop::NetLoop(zmq::context_t& context, const NetConfig& config, InputMailbox& mailbox, RejectionLog& rejections)
     : mailbox_(mailbox),
       rejections_(rejections),
       frames_(context, zmq::socket_type::xpub),
@@ -165,8 +162,8 @@ void NetLoop::forwardReplies() {
     if (!receiveWhole(reply_pipe_, parts_, 3, overflow)) return;
     for (std::size_t i = 0; i < parts_.size(); ++i) {
       const bool last = i + 1 == parts_.size();
-      (void)control_.send(parts_[i], last ? zmq::send_flags::dontwait
-                                          : zmq::send_flags::dontwait | zmq::send_flags::sndmore);
+      (void)control_.send(parts_[i],
+                          last ? zmq::send_flags::dontwait : zmq::send_flags::dontwait | zmq::send_flags::sndmore);
     }
   }
 }
@@ -269,8 +266,7 @@ void NetLoop::drainControl() {
     const std::string reason = parseControl(payload.data(), payload.size(), request.control);
     if (!reason.empty()) {
       rejections_.reject(InputSocket::Control, reason);
-      replyError(request.identity, delimiter, request.control.request_id(),
-                 gsph::v1::ERROR_CODE_BAD_REQUEST, reason);
+      replyError(request.identity, delimiter, request.control.request_id(), gsph::v1::ERROR_CODE_BAD_REQUEST, reason);
       continue;
     }
     counters_.control_requests.fetch_add(1);

@@ -45,8 +45,8 @@ struct NetConfig {
 struct NetCounters {
   std::atomic<std::int64_t> subscriptions{0};  // current frame subscriptions (XPUB verboser)
   std::atomic<std::uint64_t> frames_sent{0};
-  std::atomic<std::uint64_t> gaze_samples{0};    // usable samples received
-  std::atomic<std::uint64_t> gaze_no_point{0};   // valid = false or lost: the last point ages
+  std::atomic<std::uint64_t> gaze_samples{0};   // usable samples received
+  std::atomic<std::uint64_t> gaze_no_point{0};  // valid = false or lost: the last point ages
   std::atomic<std::uint64_t> poses{0};
   std::atomic<std::uint64_t> control_requests{0};
 };
@@ -55,8 +55,7 @@ class NetLoop {
  public:
   // Creates and binds every socket in the calling thread (so a bind error surfaces here); the loop
   // takes them over in start().
-  NetLoop(zmq::context_t& context, const NetConfig& config, InputMailbox& mailbox,
-          RejectionLog& rejections);
+  NetLoop(zmq::context_t& context, const NetConfig& config, InputMailbox& mailbox, RejectionLog& rejections);
   ~NetLoop();
   NetLoop(const NetLoop&) = delete;
   NetLoop& operator=(const NetLoop&) = delete;
@@ -78,8 +77,8 @@ class NetLoop {
   void drainControl();
   void forwardFrames();
   void forwardReplies();
-  void replyError(const std::string& identity, bool delimiter, std::uint64_t request_id,
-                  gsph::v1::ErrorCode code, const std::string& error);
+  void replyError(const std::string& identity, bool delimiter, std::uint64_t request_id, gsph::v1::ErrorCode code,
+                  const std::string& error);
 
   InputMailbox& mailbox_;
   RejectionLog& rejections_;

@@ -6,10 +6,14 @@ namespace net {
 
 const char* inputSocketName(InputSocket s) {
   switch (s) {
-    case InputSocket::Gaze: return "gaze";
-    case InputSocket::Pose: return "camera pose";
-    case InputSocket::Control: return "control";
-    case InputSocket::Subscriptions: return "frame subscriptions";
+    case InputSocket::Gaze:
+      return "gaze";
+    case InputSocket::Pose:
+      return "camera pose";
+    case InputSocket::Control:
+      return "control";
+    case InputSocket::Subscriptions:
+      return "frame subscriptions";
   }
   return "?";
 }

@@ -16,8 +16,7 @@ const char* inputSocketName(InputSocket s);
 
 class RejectionLog {
  public:
-  explicit RejectionLog(std::chrono::milliseconds interval = std::chrono::seconds(1))
-      : interval_(interval) {}
+  explicit RejectionLog(std::chrono::milliseconds interval = std::chrono::seconds(1)) : interval_(interval) {}
 
   // Called by the network thread only; the counters may be read from any thread.
   void reject(InputSocket socket, const std::string& reason);

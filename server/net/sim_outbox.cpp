@@ -2,8 +2,7 @@
 
 namespace net {
 
-SimOutbox::SimOutbox(zmq::context_t& context, const std::string& frame_pipe,
-                     const std::string& reply_pipe)
+SimOutbox::SimOutbox(zmq::context_t& context, const std::string& frame_pipe, const std::string& reply_pipe)
     : frames_(context, zmq::socket_type::pair), replies_(context, zmq::socket_type::pair) {
   frames_.set(zmq::sockopt::linger, 0);
   frames_.set(zmq::sockopt::sndhwm, 2);

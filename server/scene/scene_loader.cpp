@@ -97,9 +97,12 @@ void readParams(const Context& ctx, const json& params, sph::SimParams& p) {
       {"gravity", [&](const json& v, const std::string& k) { p.gravity = ctx.number(v, k); }},
       {"mass_small", [&](const json& v, const std::string& k) { p.mass_small = ctx.positive(v, k); }},
       {"mass_large", [&](const json& v, const std::string& k) { p.mass_large = ctx.positive(v, k); }},
-      {"kernel_particles_small", [&](const json& v, const std::string& k) { p.kernel_particles_small = ctx.positive(v, k); }},
-      {"kernel_particles_large", [&](const json& v, const std::string& k) { p.kernel_particles_large = ctx.positive(v, k); }},
-      {"surface_tension_enabled", [&](const json& v, const std::string& k) {
+      {"kernel_particles_small",
+       [&](const json& v, const std::string& k) { p.kernel_particles_small = ctx.positive(v, k); }},
+      {"kernel_particles_large",
+       [&](const json& v, const std::string& k) { p.kernel_particles_large = ctx.positive(v, k); }},
+      {"surface_tension_enabled",
+       [&](const json& v, const std::string& k) {
          if (!v.is_boolean()) ctx.fail(k, "must be true or false");
          p.surface_tension_enabled = v.get<bool>();
        }},
@@ -174,7 +177,6 @@ void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
   }
 }
 
-
 }  // namespace
 
 std::string defaultSceneDir() {
@@ -225,9 +227,9 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source) {
   } catch (const json::parse_error& e) {
     throw SceneError(source + ": not valid JSON: " + e.what());
   }
-  ctx.allowOnly(doc, "", {"name", "description", "preset", "params", "box", "box_changes",
-                          "moving_walls", "spheres", "cylinders", "water", "large_particles",
-                          "frames", "camera", "method", "adaptive", "gaze_recording"});
+  ctx.allowOnly(doc, "",
+                {"name", "description", "preset", "params", "box", "box_changes", "moving_walls", "spheres",
+                 "cylinders", "water", "large_particles", "frames", "camera", "method", "adaptive", "gaze_recording"});
   sph::Scene s;
   s.source = source;
   if (doc.contains("name")) {

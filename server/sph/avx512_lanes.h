@@ -11,9 +11,7 @@
 namespace sph::lanes {
 
 // The first `left` lanes (all 16 when left >= 16): the live lanes of a batch near a range's end.
-inline __mmask16 liveLanes(std::uint32_t left) {
-  return left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u);
-}
+inline __mmask16 liveLanes(std::uint32_t left) { return left >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << left) - 1u); }
 
 // base[idx[l]] on live lanes, 0 on the others.
 inline __m512 gather(__mmask16 live, __m512i idx, const float* base) {

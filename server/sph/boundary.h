@@ -62,8 +62,8 @@ struct BoxState {
 };
 
 struct Boundary {
-  Aabb box;                         // bounds at t = 0
-  std::vector<BoxChange> changes;   // sorted by time
+  Aabb box;                        // bounds at t = 0
+  std::vector<BoxChange> changes;  // sorted by time
   std::vector<MovingWall> moving_walls;
   std::vector<Sphere> spheres;
   std::vector<Cylinder> cylinders;

@@ -5,8 +5,7 @@
 
 namespace sph {
 
-Eigen::Matrix4d lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
-                       const Eigen::Vector3d& up) {
+Eigen::Matrix4d lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up) {
   const Eigen::Vector3d f = (target - eye).normalized();
   const Eigen::Vector3d s = f.cross(up).normalized();
   const Eigen::Vector3d u = s.cross(f);
@@ -20,8 +19,7 @@ Eigen::Matrix4d lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target
   return m;
 }
 
-Eigen::Matrix4d perspective(double fov_y_degrees, double aspect, double near_plane,
-                            double far_plane) {
+Eigen::Matrix4d perspective(double fov_y_degrees, double aspect, double near_plane, double far_plane) {
   const double f = 1.0 / std::tan(fov_y_degrees * M_PI / 360.0);
   Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
   m(0, 0) = f / aspect;
@@ -37,8 +35,7 @@ ScreenCamera cameraFromSpec(const CameraSpec& spec) {
   c.view = lookAt(spec.eye, spec.target, spec.up);
   c.viewport_width = spec.viewport_width;
   c.viewport_height = spec.viewport_height;
-  c.projection = perspective(spec.fov_y_degrees,
-                             static_cast<double>(spec.viewport_width) / spec.viewport_height,
+  c.projection = perspective(spec.fov_y_degrees, static_cast<double>(spec.viewport_width) / spec.viewport_height,
                              spec.near_plane, spec.far_plane);
   return c;
 }

@@ -17,10 +17,8 @@ struct ScreenCamera {
 };
 
 // gluLookAt / gluPerspective equivalents.
-Eigen::Matrix4d lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
-                       const Eigen::Vector3d& up);
-Eigen::Matrix4d perspective(double fov_y_degrees, double aspect, double near_plane,
-                            double far_plane);
+Eigen::Matrix4d lookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up);
+Eigen::Matrix4d perspective(double fov_y_degrees, double aspect, double near_plane, double far_plane);
 // The scene's default camera.
 ScreenCamera cameraFromSpec(const CameraSpec& spec);
 // False when a matrix entry is not finite or the viewport is empty.
@@ -53,7 +51,7 @@ struct FastProjection {
   float focal_over_width = 1.0f;
 
   FastScreenDisc project(float x, float y, float z, float radius) const {
-    const auto dot = [&](const float (&row)[4]) { return row[0] * x + row[1] * y + row[2] * z + row[3]; };
+    const auto dot = [&](const float(&row)[4]) { return row[0] * x + row[1] * y + row[2] * z + row[3]; };
     const float w = dot(row_w);
     const float depth = dot(depth_row);
     const float inv_w = 1.0f / w;

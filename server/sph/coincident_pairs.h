@@ -24,8 +24,8 @@ inline Vec3 coincidentPairDirection(std::uint32_t id_i, std::uint32_t id_j) {
 }
 
 // Pressure acceleration on i, eq. (3.13) divided by rho_i, from a neighbour j on the same point.
-inline Vec3 coincidentPressureAcceleration(const ParticleSet& p, const KernelTable& kernels,
-                                           std::size_t i, std::uint32_t j) {
+inline Vec3 coincidentPressureAcceleration(const ParticleSet& p, const KernelTable& kernels, std::size_t i,
+                                           std::uint32_t j) {
   const KernelConstants& ki = kernels[classIndex(p.size_class[i])];
   const KernelConstants& kj = kernels[classIndex(p.size_class[j])];
   // spiky_grad (h - r)^2 at r = 0, averaged over the two supports as eq. (3.35) does.

@@ -77,8 +77,7 @@ inline bool collideBox(const BoxState& box, float particle_radius, Vec3& x, Vec3
 
 // Every boundary in turn: the obstacles, then the box, so that whatever the obstacles did the
 // particle ends inside the box.
-inline void collideBoundary(const Boundary& boundary, const BoxState& box, float particle_radius, Vec3& x,
-                            Vec3& u) {
+inline void collideBoundary(const Boundary& boundary, const BoxState& box, float particle_radius, Vec3& x, Vec3& u) {
   for (const Sphere& s : boundary.spheres) collideSphere(s, particle_radius, x, u);
   for (const Cylinder& c : boundary.cylinders) collideCylinder(c, particle_radius, x, u);
   collideBox(box, particle_radius, x, u);

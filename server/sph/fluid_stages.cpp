@@ -26,8 +26,8 @@ bool fluidStagesVectorized() {
 #endif
 }
 
-void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
-                            const NeighborGrid& grid, ParticleSet& particles) {
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                            ParticleSet& particles) {
 #ifdef SPH_AVX512_FLUID
   avx512::computeDensityPressure(params, kernels, grid, particles);
 #else
@@ -35,8 +35,8 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 #endif
 }
 
-void computeAccelerations(const SimParams& params, const KernelTable& kernels,
-                          const NeighborGrid& grid, ParticleSet& particles, bool propagate_surface_distance) {
+void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                          ParticleSet& particles, bool propagate_surface_distance) {
 #ifdef SPH_AVX512_FLUID
   avx512::computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
 #else
@@ -46,8 +46,8 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
 
 namespace scalar {
 
-void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
-                            const NeighborGrid& grid, ParticleSet& p) {
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                            ParticleSet& p) {
   const float rho0 = static_cast<float>(params.rest_density);
   const float k = static_cast<float>(params.gas_stiffness);
   const std::size_t n = p.size();
@@ -68,8 +68,8 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
   }
 }
 
-void computeAccelerations(const SimParams& params, const KernelTable& kernels,
-                          const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
+void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid, ParticleSet& p,
+                          bool propagate_surface_distance) {
   const ForceConstants constants(params);
   const std::size_t n = p.size();
 
@@ -81,9 +81,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels,
     const Vec3 ui = p.velocity[i];
     const float pi_over_rho2 = p.pressure_term[i];
 
-    Vec3 pressure_acc = Vec3::Zero();   // f_pressure / rho_i
-    Vec3 viscous = Vec3::Zero();        // f_viscosity / mu
-    Vec3 normal = Vec3::Zero();         // n = grad c, eq. (3.17)
+    Vec3 pressure_acc = Vec3::Zero();  // f_pressure / rho_i
+    Vec3 viscous = Vec3::Zero();       // f_viscosity / mu
+    Vec3 normal = Vec3::Zero();        // n = grad c, eq. (3.17)
     // The colour field sums over every j including i (3.16); only the Laplacian has a self term.
     float colour_laplacian = p.volume[i] * poly6Laplacian(ki, 0.0f);
     float surface_hop = std::numeric_limits<float>::infinity();
@@ -145,7 +145,7 @@ void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::s
     for (int a = 0; a < 3; ++a) {
       const std::size_t k = 3 * i + static_cast<std::size_t>(a);
       float u = velocity[k] + dt * acceleration[k];  // eq. (3.21)
-      float x = position[k] + dt * u;                 // eq. (3.22), with the updated velocity
+      float x = position[k] + dt * u;                // eq. (3.22), with the updated velocity
       // (3.29)-(3.30): onto the face the particle crossed, velocity relative to the wall's. One
       // select per line: GCC did not vectorise the loop with the selects nested.
       const float low = lo[a] + r;
@@ -166,8 +166,7 @@ void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::s
 
 }  // namespace
 
-void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,
-                         ParticleSet& p) {
+void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box, ParticleSet& p) {
   const float dt = static_cast<float>(params.time_step);
   const std::size_t n = p.size();
   if (boundary.spheres.empty() && boundary.cylinders.empty()) {
@@ -185,7 +184,7 @@ void integrateAndCollide(const SimParams& params, const Boundary& boundary, cons
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 u = p.velocity[i] + dt * p.acceleration[i];  // eq. (3.21)
-    Vec3 x = p.position[i] + dt * u;                   // eq. (3.22), with the updated velocity
+    Vec3 x = p.position[i] + dt * u;                  // eq. (3.22), with the updated velocity
     const float r = p.radius[i];
     collideBoundary(boundary, box, r, x, u);
     p.velocity[i] = u;

@@ -65,9 +65,9 @@ inline PairKernels forceKernels(const LaneKernel& k, __m512 r2, __m512 rl, __m51
   const __m512 dr = clampZero(k.h - rl);
   const __m512 d2 = clampZero(k.h2 - r2);
   PairKernels out;
-  out.spiky = k.spiky_grad * dr * dr * inv_r;                                  // eq. (3.4)
-  out.visc = k.visc_lap * dr;                                                  // eq. (3.5)
-  out.cgrad = k.poly6_grad * d2 * d2;                                          // eq. (3.2)
+  out.spiky = k.spiky_grad * dr * dr * inv_r;                                                // eq. (3.4)
+  out.visc = k.visc_lap * dr;                                                                // eq. (3.5)
+  out.cgrad = k.poly6_grad * d2 * d2;                                                        // eq. (3.2)
   out.clap = k.poly6_grad * d2 * (_mm512_set1_ps(3.0f) * k.h2 - _mm512_set1_ps(7.0f) * r2);  // (3.3)
   return out;
 }
@@ -257,7 +257,7 @@ class DensityStage {
   }
 
   [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a,
-                                   [[maybe_unused]] std::size_t b) {
+                                  [[maybe_unused]] std::size_t b) {
     const PairBatch pair(lanes.a | lanes.b, indices, o.centre, pos_);
     __m512 w = poly6(*o.kernels.own, pair.r2);
     const __m512 mj = gather(pair.live, pair.j, mass_);  // dead lanes: mass 0, so they add nothing
@@ -335,7 +335,7 @@ class ForceStage {
   }
 
   [[gnu::always_inline]] void sum(const Owner& o, BatchLanes lanes, const std::uint32_t* indices, std::size_t a,
-                                   std::size_t b) {
+                                  std::size_t b) {
     const PairBatch pair(lanes.a | lanes.b, indices, o.centre, pos_);
     const __mmask16 live = pair.live;
     const __m512i j = pair.j;
@@ -358,7 +358,7 @@ class ForceStage {
     t.dy = pair.dy;
     t.dz = pair.dz;
     t.s = mj * (o.pressure_term + gather(live, j, pressure_term_)) * kern.spiky;  // (3.13) / rho_i
-    t.sv = volj * kern.visc;                                                     // (3.14)
+    t.sv = volj * kern.visc;                                                      // (3.14)
     t.dux = gather(live, pair.j3, vel_) - o.ux;
     t.duy = gather(live, pair.j3, vel_ + 1) - o.uy;
     t.duz = gather(live, pair.j3, vel_ + 2) - o.uz;
@@ -444,8 +444,8 @@ class ForceStage {
 // members of the stage GCC could not tell those loads from the stage's own sums, so it kept the
 // force loop's ten sums in memory and stored them after every batch (BM_Forces, 1 thread, best of
 // 8: regular 4.30 -> 4.12 ms, gaze 1.52 -> 1.38 ms).
-void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
-                            const NeighborGrid& grid, ParticleSet& p) {
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                            ParticleSet& p) {
   const std::size_t n = p.size();
   const SizeClassLanes classes(params, kernels, p);
   // Blocks to whichever thread is free: the cost of a particle varies with its class and count.
@@ -457,8 +457,8 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
   }
 }
 
-void computeAccelerations(const SimParams& params, const KernelTable& kernels,
-                          const NeighborGrid& grid, ParticleSet& p, bool propagate_surface_distance) {
+void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid, ParticleSet& p,
+                          bool propagate_surface_distance) {
   const std::size_t n = p.size();
   const SizeClassLanes classes(params, kernels, p);
 #pragma omp parallel for schedule(dynamic, 1)

@@ -13,12 +13,11 @@
 
 namespace sph::avx512 {
 
-void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
-                            const NeighborGrid& grid, ParticleSet& particles);
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                            ParticleSet& particles);
 
-void computeAccelerations(const SimParams& params, const KernelTable& kernels,
-                          const NeighborGrid& grid, ParticleSet& particles,
-                          bool propagate_surface_distance);
+void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                          ParticleSet& particles, bool propagate_surface_distance);
 
 }  // namespace sph::avx512
 

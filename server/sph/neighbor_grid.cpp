@@ -7,8 +7,8 @@
 #if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
-#include <cmath>
 #include <omp.h>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -33,8 +33,8 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
     cells *= static_cast<std::size_t>(dims_[a]);
   }
   if (cells > (std::size_t{1} << 28)) {
-    throw std::invalid_argument("neighbour grid: box too large for the support radius (" +
-                                std::to_string(cells) + " cells)");
+    throw std::invalid_argument("neighbour grid: box too large for the support radius (" + std::to_string(cells) +
+                                " cells)");
   }
   cell_start_.assign(cells + 1, 0);
   cell_sum_.assign(cells, 0);
@@ -147,8 +147,8 @@ void NeighborGrid::bin(const ParticleSet& particles) {
     // Prefix sums over the cells, each thread over its share of them: first the particles in the
     // share, then (after every thread has its total) the cell starts and the per-thread cursors.
     const ThreadShare my_cells = threadShare(cells);
-    cell_range_total_[mine.thread] = sumCellCounts(thread_cursor_.data(), team, cells, my_cells.begin, my_cells.end,
-                                                   cell_sum_.data());
+    cell_range_total_[mine.thread] =
+        sumCellCounts(thread_cursor_.data(), team, cells, my_cells.begin, my_cells.end, cell_sum_.data());
 #pragma omp barrier
     std::uint32_t offset = 0;
     for (std::size_t t = 0; t < mine.thread; ++t) offset += cell_range_total_[t];
@@ -311,8 +311,8 @@ struct ScanTarget {
 // cell share their candidates, so a group of them loads each batch once, and their independent
 // count chains overlap.
 template <std::size_t kTargets>
-void scanRows(const std::uint32_t* row_begin, const std::uint32_t* row_end, int rows, const float* sx,
-              const float* sy, const float* sz, const float* support, const std::uint32_t* index,
+void scanRows(const std::uint32_t* row_begin, const std::uint32_t* row_end, int rows, const float* sx, const float* sy,
+              const float* sz, const float* support, const std::uint32_t* index,
               std::array<ScanTarget, kTargets>& targets, std::uint32_t capacity) {
   const __m512 half = _mm512_set1_ps(0.5f);
   for (int r = 0; r < rows; ++r) {
@@ -346,7 +346,8 @@ std::array<std::uint32_t, kGroup> NeighborGrid::scanCandidateGroup(const Candida
   };
   std::array<ScanTarget, kGroup> targets = [&]<std::size_t... g>(std::index_sequence<g...>) {
     return std::array<ScanTarget, kGroup>{target(g)...};
-  }(std::make_index_sequence<kGroup>{});
+  }
+  (std::make_index_sequence<kGroup>{});
   scanRows(rows.begin, rows.end, rows.count, sorted_x_.data(), sorted_y_.data(), sorted_z_.data(),
            sorted_support_.data(), cell_particles_.data(), targets, static_cast<std::uint32_t>(stride_ - 1));
   std::array<std::uint32_t, kGroup> counts;
@@ -354,8 +355,8 @@ std::array<std::uint32_t, kGroup> NeighborGrid::scanCandidateGroup(const Candida
   return counts;
 }
 #else
-std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi,
-                                           std::uint32_t self, std::uint32_t* out) const {
+std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi, std::uint32_t self,
+                                           std::uint32_t* out) const {
   const auto last_slot = static_cast<std::uint32_t>(stride_ - 1);
   std::uint32_t count = 0;
   for (int r = 0; r < rows.count; ++r) {

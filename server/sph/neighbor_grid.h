@@ -5,8 +5,8 @@
 // particles need no second code path.
 #pragma once
 
-#include <cstddef>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -112,7 +112,7 @@ class NeighborGrid {
   // Per thread: the lists of a group after its first, (kMaxGroup - 1) x (stride + 16) slots.
   std::vector<std::vector<std::uint32_t>> group_scratch_;
   std::vector<std::uint32_t> neighbor_count_;
-  std::vector<std::size_t> neighbor_start_;    // where each list begins in neighbor_index_
+  std::vector<std::size_t> neighbor_start_;  // where each list begins in neighbor_index_
   // Room for particles x stride_. A block's particles [b, e) own slots [b, e) x stride_ and pack
   // their lists from the start of that range: the pair loops then stream the lists instead of
   // touching a fresh cache line for each particle (a fixed stride left 3/4 of each row empty).

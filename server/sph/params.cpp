@@ -14,7 +14,7 @@ SizeClassProps deriveClass(double mass, double kernel_particles, double rho0) {
   SizeClassProps p;
   p.mass = mass;
   p.kernel_particles = kernel_particles;
-  p.radius = std::cbrt(3.0 * mass / (4.0 * std::numbers::pi * rho0));             // (3.7)
+  p.radius = std::cbrt(3.0 * mass / (4.0 * std::numbers::pi * rho0));  // (3.7)
   const double volume = mass / rho0;
   p.support = std::cbrt(3.0 * volume * kernel_particles / (4.0 * std::numbers::pi));  // (3.8)
   return p;

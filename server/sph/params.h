@@ -16,21 +16,21 @@ const char* sizeClassName(SizeClass c);
 
 // Per size class: what table 3.2 gives (mass, kernel particles x) and what follows from it.
 struct SizeClassProps {
-  double mass = 0.0;             // m (table 3.2)
-  double kernel_particles = 0.0; // x (table 3.2)
-  double radius = 0.0;           // r = cbrt(3 m / (4 pi rho0)), eq. (3.7)
-  double support = 0.0;          // h = cbrt(3 V x / (4 pi)), V = m / rho0, eq. (3.8)
+  double mass = 0.0;              // m (table 3.2)
+  double kernel_particles = 0.0;  // x (table 3.2)
+  double radius = 0.0;            // r = cbrt(3 m / (4 pi rho0)), eq. (3.7)
+  double support = 0.0;           // h = cbrt(3 V x / (4 pi)), V = m / rho0, eq. (3.8)
 };
 
 struct SimParams {
   std::string preset = "thesis";
   // Table 3.1.
-  double rest_density = 998.29;  // rho0
-  double viscosity = 3.5;        // mu
-  double surface_tension = 0.0728; // sigma
-  double gas_stiffness = 3.0;    // k
-  double time_step = 0.01;       // dt
-  double gravity = -9.81;        // g along y
+  double rest_density = 998.29;     // rho0
+  double viscosity = 3.5;           // mu
+  double surface_tension = 0.0728;  // sigma
+  double gas_stiffness = 3.0;       // k
+  double time_step = 0.01;          // dt
+  double gravity = -9.81;           // g along y
   // Table 3.2 (masses and kernel particles per class; adaptive weights live with the methods).
   double mass_small = 0.01;
   double mass_large = 0.02;

@@ -27,8 +27,7 @@ class ParticleSet {
 
   // Appends one particle at rest; class-derived attributes (mass, radius, support) come from `props`.
   // Throws std::length_error past the capacity (the step never grows the arrays).
-  std::uint32_t add(const Vec3& position, const Vec3& velocity, SizeClass size_class,
-                    const SizeClassProps& props);
+  std::uint32_t add(const Vec3& position, const Vec3& velocity, SizeClass size_class, const SizeClassProps& props);
   void clear();
   // Appends `n` particles with fresh ids and every other attribute zeroed, for the caller to fill
   // (the adaptive step's split children). Returns the index of the first. Throws std::length_error
@@ -50,20 +49,20 @@ class ParticleSet {
   std::size_t countOf(SizeClass c) const;
 
   // Attributes (structure of arrays). Public so that stages read them directly; size is the same.
-  std::vector<std::uint32_t> id;        // stable id, survives reordering
+  std::vector<std::uint32_t> id;  // stable id, survives reordering
   std::vector<SizeClass> size_class;
   std::vector<float> mass;
-  std::vector<float> radius;            // particle radius, eq. (3.7)
-  std::vector<float> support;           // support radius h, eq. (3.8)
+  std::vector<float> radius;   // particle radius, eq. (3.7)
+  std::vector<float> support;  // support radius h, eq. (3.8)
   std::vector<Vec3> position;
   std::vector<Vec3> velocity;
   std::vector<Vec3> acceleration;
-  std::vector<float> density;           // eq. (3.11)
-  std::vector<float> pressure;          // eq. (3.12)
-  std::vector<float> normal_length;     // |n| of the colour field gradient, eq. (3.17)
+  std::vector<float> density;        // eq. (3.11)
+  std::vector<float> pressure;       // eq. (3.12)
+  std::vector<float> normal_length;  // |n| of the colour field gradient, eq. (3.17)
   // Per-particle factors of the pair sums, set with the density so the force loop divides less:
-  std::vector<float> pressure_term;     // p / rho^2, eq. (3.13)
-  std::vector<float> volume;            // m / rho, eqs. (3.14), (3.16)
+  std::vector<float> pressure_term;  // p / rho^2, eq. (3.13)
+  std::vector<float> volume;         // m / rho, eqs. (3.14), (3.16)
   // Adaptive step, surface criterion: distance to the surface or a boundary, d in (3.45), kept
   // from step to step (infinity until reached), and this step's one-hop update of it.
   std::vector<float> surface_distance;
@@ -71,9 +70,21 @@ class ParticleSet {
 
   template <typename F>
   void forEachAttribute(F&& f) {
-    f(id); f(size_class); f(mass); f(radius); f(support); f(position); f(velocity);
-    f(acceleration); f(density); f(pressure); f(normal_length); f(pressure_term); f(volume);
-    f(surface_distance); f(surface_hop);
+    f(id);
+    f(size_class);
+    f(mass);
+    f(radius);
+    f(support);
+    f(position);
+    f(velocity);
+    f(acceleration);
+    f(density);
+    f(pressure);
+    f(normal_length);
+    f(pressure_term);
+    f(volume);
+    f(surface_distance);
+    f(surface_hop);
   }
 
  private:

@@ -26,21 +26,21 @@ void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out) {
   }
   const long capacity = static_cast<long>(cells[0]) * cells[1] * cells[2];
   if (capacity < count) {
-    throw std::invalid_argument(scene.source + ": water region holds " + std::to_string(capacity) +
-                                " " + sizeClassName(start_class) + " particles at spacing " +
-                                std::to_string(spacing) + ", the scene needs " + std::to_string(count));
+    throw std::invalid_argument(scene.source + ": water region holds " + std::to_string(capacity) + " " +
+                                sizeClassName(start_class) + " particles at spacing " + std::to_string(spacing) +
+                                ", the scene needs " + std::to_string(count));
   }
   if (static_cast<std::size_t>(count) > out.capacity()) {
-    throw std::invalid_argument(scene.source + ": " + std::to_string(count) +
-                                " particles exceed the capacity of " + std::to_string(out.capacity()));
+    throw std::invalid_argument(scene.source + ": " + std::to_string(count) + " particles exceed the capacity of " +
+                                std::to_string(out.capacity()));
   }
   out.clear();
   // y outermost so that the lowest layers fill first.
   for (int y = 0; y < cells[1] && static_cast<int>(out.size()) < count; ++y) {
     for (int z = 0; z < cells[2] && static_cast<int>(out.size()) < count; ++z) {
       for (int x = 0; x < cells[0] && static_cast<int>(out.size()) < count; ++x) {
-        const Eigen::Vector3d p = scene.water.min + Eigen::Vector3d(inset + x * spacing, inset + y * spacing,
-                                                                    inset + z * spacing);
+        const Eigen::Vector3d p =
+            scene.water.min + Eigen::Vector3d(inset + x * spacing, inset + y * spacing, inset + z * spacing);
         out.add(p.cast<float>(), Vec3::Zero(), start_class, props);
       }
     }

@@ -26,7 +26,7 @@ struct CameraSpec {
 
 struct Scene {
   std::string name;
-  std::string source;          // file it was read from, for messages
+  std::string source;  // file it was read from, for messages
   std::string description;
   SimParams params;
   Boundary boundary;

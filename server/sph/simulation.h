@@ -35,8 +35,7 @@ class AdaptiveStep {
 class Simulation {
  public:
   // Fills the scene's water with particles of `start_class` (see fillWater).
-  Simulation(const Scene& scene, SizeClass start_class,
-             std::size_t capacity = ParticleSet::kDefaultCapacity);
+  Simulation(const Scene& scene, SizeClass start_class, std::size_t capacity = ParticleSet::kDefaultCapacity);
 
   void setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) { adaptive_ = std::move(step); }
   // The surface criterion's distance field advances one neighbour hop per step inside the force

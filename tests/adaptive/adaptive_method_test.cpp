@@ -44,8 +44,7 @@ struct Seen {
   double distance;
   double radius;
 };
-Seen seenFrom(const sph::Projector& proj, const sph::ParticleSet& p, std::size_t i, double gx,
-              double gy) {
+Seen seenFrom(const sph::Projector& proj, const sph::ParticleSet& p, std::size_t i, double gx, double gy) {
   const sph::ScreenDisc d = proj.project(p.position[i].cast<double>(), p.radius[i]);
   const double dx = d.x - gx;
   const double dy = (d.y - gy) / proj.aspect();
@@ -164,8 +163,8 @@ TEST(AdaptiveMethods, HybridKeepsDeepParticlesUnderTheGazeLarge) {
     std::size_t count = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const sph::Vec3& x = p.position[i];
-      const bool deep = x.x() > 0.17f && x.x() < 0.33f && x.z() > 0.17f && x.z() < 0.33f &&
-                        x.y() > 0.1f && x.y() < 0.18f;
+      const bool deep =
+          x.x() > 0.17f && x.x() < 0.33f && x.z() > 0.17f && x.z() < 0.33f && x.y() > 0.1f && x.y() < 0.18f;
       count += deep && p.size_class[i] == sph::SizeClass::Small;
     }
     return count;
@@ -244,14 +243,11 @@ TEST(AdaptiveMethods, BadSettingsAreRejected) {
   const sph::Scene scene = poolScene(0.5, 0.5, 500);
   sph::AdaptiveConfig config;
   config.gaze_ring_radius = 0.01;  // smaller than the circle
-  EXPECT_THROW(sph::AdaptiveController(sph::Method::Gaze, config, cameraOf(scene)),
-               std::invalid_argument);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Gaze, config, cameraOf(scene)), std::invalid_argument);
   config = {};
   config.alpha = std::nan("");
-  EXPECT_THROW(sph::AdaptiveController(sph::Method::Surface, config, cameraOf(scene)),
-               std::invalid_argument);
-  EXPECT_THROW(sph::AdaptiveController(sph::Method::Regular, {}, cameraOf(scene)),
-               std::invalid_argument);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Surface, config, cameraOf(scene)), std::invalid_argument);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Regular, {}, cameraOf(scene)), std::invalid_argument);
   EXPECT_EQ(sph::makeAdaptiveController(sph::Method::Regular, {}, cameraOf(scene)), nullptr);
   sph::Method m;
   EXPECT_FALSE(sph::methodByName("eye", m));
@@ -286,12 +282,8 @@ TEST(AdaptiveMethods, ResultIndependentOfThreadCount) {
     const Snapshot two = runWithThreads(method, 2);
     ASSERT_EQ(one.id, two.id);
     ASSERT_EQ(one.size_class, two.size_class);
-    ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(),
-                          one.position.size() * sizeof(sph::Vec3)),
-              0);
-    ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(),
-                          one.velocity.size() * sizeof(sph::Vec3)),
-              0);
+    ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
+    ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
   }
 }
 

@@ -120,8 +120,7 @@ TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
   sph::applySplitMerge(sim, split_all, std::vector<std::int32_t>(n, -1), keep, slots);
   ASSERT_EQ(p.size(), 2 * n);
   std::vector<std::int8_t> split_again(p.size(), sph::kSplit);
-  const auto counts =
-      sph::applySplitMerge(sim, split_again, std::vector<std::int32_t>(p.size(), -1), keep, slots);
+  const auto counts = sph::applySplitMerge(sim, split_again, std::vector<std::int32_t>(p.size(), -1), keep, slots);
   EXPECT_EQ(counts.splits, 0);
   EXPECT_EQ(p.size(), 2 * n);
 }
@@ -140,8 +139,7 @@ TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
   const std::size_t n = sim.particles().size();
   std::vector<std::uint8_t> keep;
   std::vector<std::uint32_t> slots;
-  sph::applySplitMerge(sim, std::vector<std::int8_t>(n, sph::kSplit),
-                       std::vector<std::int32_t>(n, -1), keep, slots);
+  sph::applySplitMerge(sim, std::vector<std::int8_t>(n, sph::kSplit), std::vector<std::int32_t>(n, -1), keep, slots);
   sim.rebuildNeighbors();
   sph::computeDensityPressure(sim.params(), sim.kernels(), sim.grid(), sim.particles());
   const double after = meanDensity();
@@ -208,8 +206,7 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   }
   ASSERT_LT(b, n);
   for (std::size_t i = 1; i < n; ++i) {
-    if ((p.position[i] - p.position[a]).norm() > 4.0f * h &&
-        (p.position[i] - p.position[b]).norm() > 4.0f * h) {
+    if ((p.position[i] - p.position[a]).norm() > 4.0f * h && (p.position[i] - p.position[b]).norm() > 4.0f * h) {
       c = i;
       break;
     }

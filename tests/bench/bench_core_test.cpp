@@ -87,12 +87,14 @@ TEST(BenchRun, InterleavedRunsMatchRunsAlone) {
     for (int k = 0; k < 5 && !regular.done(); ++k) regular.stepFrame();
     for (int k = 0; k < 5 && !gaze_run.done(); ++k) gaze_run.stepFrame();
   }
-  for (const auto& [alone, turns] : {std::pair{regular_alone, regular.result()}, std::pair{gaze_alone, gaze_run.result()}}) {
+  for (const auto& [alone, turns] :
+       {std::pair{regular_alone, regular.result()}, std::pair{gaze_alone, gaze_run.result()}}) {
     ASSERT_EQ(turns.records.size(), 12u) << alone.method;
     EXPECT_EQ(turns.mass_end, alone.mass_end) << alone.method;
     for (std::size_t f = 0; f < alone.records.size(); ++f) {
       EXPECT_EQ(turns.records[f].n_small, alone.records[f].n_small) << alone.method << " frame " << f;
-      EXPECT_EQ(turns.records[f].mean_density_ratio, alone.records[f].mean_density_ratio) << alone.method << " frame " << f;
+      EXPECT_EQ(turns.records[f].mean_density_ratio, alone.records[f].mean_density_ratio)
+          << alone.method << " frame " << f;
     }
   }
 }

@@ -39,8 +39,8 @@ TEST(MachineLoad, OtherProcessesGetTheBusyTimeThatIsNotOurs) {
   EXPECT_EQ(bench::describe(load), "1.00 cores in other processes, 0.10 stolen");
 
   // Ticks are coarser than getrusage: ours may exceed the machine's count; never below zero.
-  EXPECT_DOUBLE_EQ(
-      bench::loadBetween(snapshot(1000, 0, 4.0, 10.0), snapshot(1100, 0, 5.2, 11.0), 100.0).other_cores, 0.0);
+  EXPECT_DOUBLE_EQ(bench::loadBetween(snapshot(1000, 0, 4.0, 10.0), snapshot(1100, 0, 5.2, 11.0), 100.0).other_cores,
+                   0.0);
 }
 
 TEST(MachineLoad, UnknownWithoutTwoReadingsOrTime) {

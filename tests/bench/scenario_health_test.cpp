@@ -7,8 +7,7 @@
 
 namespace {
 
-class ScenarioHealth
-    : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+class ScenarioHealth : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
 TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
   const auto& [scene_name, method] = GetParam();
@@ -29,8 +28,7 @@ TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
   options.on_frame = [&](const sph::Simulation& sim, const bench::FrameRecord& r) {
     worst_outside = std::max(worst_outside, r.outside_box);
     worst_nan = std::max(worst_nan, r.nan_values);
-    const double by_class = mass_small * static_cast<double>(r.n_small) +
-                            mass_large * static_cast<double>(r.n_large);
+    const double by_class = mass_small * static_cast<double>(r.n_small) + mass_large * static_cast<double>(r.n_large);
     mass_mismatches += sim.particles().totalMass() != by_class;
   };
   const bench::RunResult run = bench::runScene(s, method, options);
@@ -44,11 +42,10 @@ TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllScenesAllMethods, ScenarioHealth,
-    ::testing::Combine(::testing::Values("dambreak", "dambreak_obstacles", "large_box", "small_box",
-                                         "wave"),
-                       ::testing::Values("regular", "surface", "gaze", "hybrid")),
-    [](const auto& test) { return std::get<0>(test.param) + "_" + std::get<1>(test.param); });
+INSTANTIATE_TEST_SUITE_P(AllScenesAllMethods, ScenarioHealth,
+                         ::testing::Combine(::testing::Values("dambreak", "dambreak_obstacles", "large_box",
+                                                              "small_box", "wave"),
+                                            ::testing::Values("regular", "surface", "gaze", "hybrid")),
+                         [](const auto& test) { return std::get<0>(test.param) + "_" + std::get<1>(test.param); });
 
 }  // namespace

@@ -99,7 +99,7 @@ TEST(FixationModel, FixationDurationsStayWithinBounds) {
   for (const Labelled& s : samples) {
     (s.phase == FixationSaccadeModel::Phase::kFixation ? fixation_samples : saccade_samples)[s.fixation]++;
   }
-  ASSERT_GT(fixation_samples.size(), 100u);  // a minute of 0.2-0.4 s fixations: about 180
+  ASSERT_GT(fixation_samples.size(), 100u);            // a minute of 0.2-0.4 s fixations: about 180
   const auto last = fixation_samples.rbegin()->first;  // may be cut off by the end of the run
   double min_s = 1e9, max_s = 0.0;
   for (const auto& [index, count] : fixation_samples) {

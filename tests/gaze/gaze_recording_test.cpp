@@ -57,12 +57,14 @@ TEST(GazeRecording, RoundTripIsExact) {
 
 TEST(GazeRecording, ReadsCommentsBlankLinesCrLfAndSpaces) {
   TempFile file;
-  file.write("# recorded by a test\r\n\r\ntime_s,x,y,valid\r\n# a comment between samples\r\n"
-             "0, 0.25 ,0.75,1\r\n0.5,+0.5,0.5,0\r\n\r\n1e-1,0,0,1\n");
+  file.write(
+      "# recorded by a test\r\n\r\ntime_s,x,y,valid\r\n# a comment between samples\r\n"
+      "0, 0.25 ,0.75,1\r\n0.5,+0.5,0.5,0\r\n\r\n1e-1,0,0,1\n");
   // 1e-1 < 0.5: that last line must fail, which also proves exponent notation parses.
   EXPECT_THROW(gaze::readGazeRecording(file.path()), GazeFormatError);
-  file.write("# recorded by a test\r\n\r\ntime_s,x,y,valid\r\n# a comment between samples\r\n"
-             "0, 0.25 ,0.75,1\r\n0.5,+0.5,0.5,0\r\n\r\n1e0,0,0,1\n");
+  file.write(
+      "# recorded by a test\r\n\r\ntime_s,x,y,valid\r\n# a comment between samples\r\n"
+      "0, 0.25 ,0.75,1\r\n0.5,+0.5,0.5,0\r\n\r\n1e0,0,0,1\n");
   const GazeRecording read = gaze::readGazeRecording(file.path());
   ASSERT_EQ(read.samples.size(), 3u);
   EXPECT_EQ(read.samples[0].x, 0.25);

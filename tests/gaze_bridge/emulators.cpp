@@ -210,8 +210,8 @@ void GazepointEmulator::serve() {
 
 std::string gazepointRecord(double time_s, double x, double y, bool valid) {
   char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "<REC TIME=\"%.3f\" BPOGX=\"%.5f\" BPOGY=\"%.5f\" BPOGV=\"%d\" />\r\n", time_s, x,
-                y, valid ? 1 : 0);
+  std::snprintf(buffer, sizeof buffer, "<REC TIME=\"%.3f\" BPOGX=\"%.5f\" BPOGY=\"%.5f\" BPOGV=\"%d\" />\r\n", time_s,
+                x, y, valid ? 1 : 0);
   return buffer;
 }
 

@@ -68,9 +68,9 @@ TEST(EndToEnd, FilteredGazeFollowsFixationsAndIsRecorded) {
     EXPECT_GT(second->sequence(), first->sequence());
     EXPECT_GT(second->bridge_time_us(), first->bridge_time_us());
     // The bridge clock is the system clock in microseconds.
-    const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(
-                            std::chrono::system_clock::now().time_since_epoch())
-                            .count();
+    const auto now_us =
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+            .count();
     EXPECT_LE(second->bridge_time_us(), now_us);
     EXPECT_GT(second->bridge_time_us(), now_us - 60'000'000);
     bridge.stop();
@@ -132,7 +132,7 @@ TEST(EndToEnd, ServerRestartIsReconnected) {
     return false;
   };
   ASSERT_TRUE(stream_until_seen(*receiver));
-  receiver.reset();  // the server goes away ...
+  receiver.reset();                   // the server goes away ...
   std::this_thread::sleep_for(50ms);  // (not a pass/fail decision: lets the bridge send into the void)
   // ... and comes back on the same endpoint (retrying the bind while the old listener closes).
   std::unique_ptr<zmq::socket_t> server;

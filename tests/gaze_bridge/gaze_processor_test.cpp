@@ -141,7 +141,7 @@ TEST(GazeProcessor, IvtFlagsFixationsButNotSaccades) {
   GazeProcessor processor(p, 1000 * kMs);
   ProcessedSample out;
   ASSERT_TRUE(processor.accept(sample(0.00, 0.5, 0.5), out));
-  EXPECT_FALSE(out.fixation);  // no speed yet
+  EXPECT_FALSE(out.fixation);                                    // no speed yet
   ASSERT_TRUE(processor.accept(sample(0.01, 0.502, 0.5), out));  // 0.2 widths/s
   EXPECT_TRUE(out.fixation);
   ASSERT_TRUE(processor.accept(sample(0.02, 0.512, 0.5), out));  // 1.0 widths/s

@@ -15,12 +15,12 @@
 #include <map>
 #include <thread>
 
+#include <spdlog/spdlog.h>
 #include "bridge.h"
 #include "bridge_harness.h"
 #include "emulators.h"
 #include "gazepoint_source.h"
 #include "pupil_source.h"
-#include <spdlog/spdlog.h>
 
 using namespace gaze_bridge_test;
 using namespace std::chrono_literals;
@@ -36,7 +36,9 @@ void report(const char* what, std::vector<std::int64_t> ns) {
     return;
   }
   std::sort(ns.begin(), ns.end());
-  const auto at = [&](double p) { return static_cast<double>(ns[std::min(ns.size() - 1, static_cast<std::size_t>(p * ns.size()))]) * 1e-3; };
+  const auto at = [&](double p) {
+    return static_cast<double>(ns[std::min(ns.size() - 1, static_cast<std::size_t>(p * ns.size()))]) * 1e-3;
+  };
   std::printf("  %-32s n=%zu  p50 %.0f us  p99 %.0f us  max %.0f us\n", what, ns.size(), at(0.5), at(0.99),
               static_cast<double>(ns.back()) * 1e-3);
 }
@@ -49,7 +51,8 @@ std::vector<std::int64_t> drive(GazeReceiver& receiver, double seconds, Emit emi
   const std::int64_t period = static_cast<std::int64_t>(1e9 / kRateHz);
   const std::int64_t start = steadyNowNs() + 500'000'000;  // 0.5 s of warm-up before counting
   long k = 0;
-  for (std::int64_t next = steadyNowNs(); next < start + static_cast<std::int64_t>(seconds * 1e9); next += period, ++k) {
+  for (std::int64_t next = steadyNowNs(); next < start + static_cast<std::int64_t>(seconds * 1e9);
+       next += period, ++k) {
     // Receive until the next write is due.
     while (true) {
       const std::int64_t wait = next - steadyNowNs();
@@ -147,7 +150,8 @@ void benchPupil(double seconds) {
   RunningBridge bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params), receiver.endpoint());
   auto e2e = drive(receiver, seconds, [&](long k) {
     const double x = 0.3 + 0.0005 * static_cast<double>(k % 200);
-    pupil.publish("surfaces.screen", packSurfaceMessage("screen", {{x, 0.5, 0.99, true, static_cast<double>(k) * 1e-3}}));
+    pupil.publish("surfaces.screen",
+                  packSurfaceMessage("screen", {{x, 0.5, 0.99, true, static_cast<double>(k) * 1e-3}}));
   });
   bridge.finish();
   std::printf("pupil (ZeroMQ SUB, msgpack, one sample per message) at %.0f Hz:\n", kRateHz);

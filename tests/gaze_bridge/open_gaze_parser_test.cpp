@@ -21,9 +21,10 @@ std::vector<std::string> drain(OpenGazeLineSplitter& splitter) {
 }  // namespace
 
 TEST(OpenGazeLineSplitter, ReassemblesRecordsSplitAtEveryByte) {
-  const std::string stream = "<ACK ID=\"ENABLE_SEND_DATA\" STATE=\"1\" />\r\n"
-                             "<REC TIME=\"1.000\" BPOGX=\"0.25\" BPOGY=\"0.75\" BPOGV=\"1\" />\r\n"
-                             "<REC TIME=\"1.016\" BPOGX=\"0.5\" BPOGY=\"0.5\" BPOGV=\"0\" />\r\n";
+  const std::string stream =
+      "<ACK ID=\"ENABLE_SEND_DATA\" STATE=\"1\" />\r\n"
+      "<REC TIME=\"1.000\" BPOGX=\"0.25\" BPOGY=\"0.75\" BPOGV=\"1\" />\r\n"
+      "<REC TIME=\"1.016\" BPOGX=\"0.5\" BPOGY=\"0.5\" BPOGV=\"0\" />\r\n";
   const std::vector<std::string> expected = {"<ACK ID=\"ENABLE_SEND_DATA\" STATE=\"1\" />",
                                              "<REC TIME=\"1.000\" BPOGX=\"0.25\" BPOGY=\"0.75\" BPOGV=\"1\" />",
                                              "<REC TIME=\"1.016\" BPOGX=\"0.5\" BPOGY=\"0.5\" BPOGV=\"0\" />"};

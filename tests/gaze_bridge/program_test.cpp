@@ -44,7 +44,8 @@ int waitExit(pid_t pid) {
   const auto end = std::chrono::steady_clock::now() + 10s;
   int status = 0;
   while (std::chrono::steady_clock::now() < end) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    if (::waitpid(pid, &status, WNOHANG) == pid)
+      return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     std::this_thread::sleep_for(10ms);
   }
   ::kill(pid, SIGKILL);

@@ -39,8 +39,8 @@ TEST(PupilDecode, AcceptsIntegerAndFloat32Numbers) {
   pk.pack_map(4);
   pk.pack(std::string("norm_pos"));
   pk.pack_array(2);
-  pk.pack(1);       // integer
-  pk.pack(0.25f);   // float32
+  pk.pack(1);      // integer
+  pk.pack(0.25f);  // float32
   pk.pack(std::string("confidence"));
   pk.pack(1);
   pk.pack(std::string("on_surf"));

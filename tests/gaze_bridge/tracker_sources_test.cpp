@@ -53,12 +53,14 @@ TEST(PupilSource, BridgeTurnsSurfaceGazeIntoTopLeftPoints) {
   gaze_bridge::PupilParams params;
   params.remote_port = pupil.remotePort();
   params.surface = "screen";
-  BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params), rawParams(receiver.endpoint()));
+  BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params),
+                      rawParams(receiver.endpoint()));
 
   // Several samples per message: valid, low confidence (dropped), off surface (dropped), valid.
-  const std::string payload = packSurfaceMessage(
-      "screen", {{0.2, 0.9, 0.95, true, 50.0}, {0.4, 0.4, 0.3, true, 50.004}, {0.6, 0.6, 0.99, false, 50.008},
-                 {0.8, 0.3, 0.9, true, 50.012}});
+  const std::string payload = packSurfaceMessage("screen", {{0.2, 0.9, 0.95, true, 50.0},
+                                                            {0.4, 0.4, 0.3, true, 50.004},
+                                                            {0.6, 0.6, 0.99, false, 50.008},
+                                                            {0.8, 0.3, 0.9, true, 50.012}});
   auto first = publishUntil(pupil, "surfaces.screen", payload, receiver,
                             [](const auto& s) { return s.valid() && s.tracker_time_s() == 50.0; });
   ASSERT_TRUE(first);
@@ -86,7 +88,8 @@ TEST(PupilSource, IgnoresOtherSurfacesAndPrefixTopics) {
   GazeReceiver receiver(context);
   gaze_bridge::PupilParams params;
   params.remote_port = pupil.remotePort();
-  BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params), rawParams(receiver.endpoint()));
+  BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params),
+                      rawParams(receiver.endpoint()));
   const std::string wrong = packSurfaceMessage("screen2", {{0.9, 0.9, 1.0, true, 1.0}});
   const std::string right = packSurfaceMessage("screen", {{0.1, 0.9, 1.0, true, 2.0}});
   const auto end = std::chrono::steady_clock::now() + 10s;
@@ -109,7 +112,8 @@ TEST(PupilSource, ResumesAfterCaptureRestartsOnAnotherPort) {
   gaze_bridge::PupilParams params;
   params.remote_port = remote_port;
   params.tracker_timeout_s = 0.3;
-  BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params), rawParams(receiver.endpoint()));
+  BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params),
+                      rawParams(receiver.endpoint()));
   ASSERT_TRUE(publishUntil(*pupil, "surfaces.screen", packSurfaceMessage("screen", {{0.3, 0.3, 1.0, true, 1.0}}),
                            receiver, [](const auto& s) { return s.valid(); }));
   const int old_pub_port = pupil->pubPort();

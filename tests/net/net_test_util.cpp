@@ -17,8 +17,8 @@ std::vector<Eigen::Vector2d> smallOnScreen(const gsph::v1::Frame& frame, const s
   return out;
 }
 
-int countNear(const std::vector<Eigen::Vector2d>& points, const sph::ScreenCamera& camera, double x,
-              double y, double radius) {
+int countNear(const std::vector<Eigen::Vector2d>& points, const sph::ScreenCamera& camera, double x, double y,
+              double radius) {
   // Distances in units of the viewport width, as the gaze radius is measured.
   const double aspect = static_cast<double>(camera.viewport_width) / camera.viewport_height;
   int n = 0;

@@ -44,15 +44,13 @@ inline std::unique_ptr<app::Server> startServer(const app::ServerOptions& option
 }
 
 inline std::int64_t nowUs() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 
 class FrameSubscriber {
  public:
-  FrameSubscriber(zmq::context_t& ctx, const std::string& endpoint, bool conflate = false,
-                  int receive_hwm = 0)
+  FrameSubscriber(zmq::context_t& ctx, const std::string& endpoint, bool conflate = false, int receive_hwm = 0)
       : socket_(ctx, zmq::socket_type::sub) {
     socket_.set(zmq::sockopt::linger, 0);
     if (receive_hwm > 0) socket_.set(zmq::sockopt::rcvhwm, receive_hwm);
@@ -163,8 +161,8 @@ inline double maxAbsDiff(const Eigen::Matrix4d& a, const Eigen::Matrix4d& b) {
 // Screen positions (normalized, origin top left) of the SMALL particles of a frame under `camera`.
 std::vector<Eigen::Vector2d> smallOnScreen(const gsph::v1::Frame& frame, const sph::ScreenCamera& camera);
 // How many of `points` lie within `radius` (fraction of width, aspect-corrected as the gaze circle is) of (x, y).
-int countNear(const std::vector<Eigen::Vector2d>& points, const sph::ScreenCamera& camera, double x,
-              double y, double radius);
+int countNear(const std::vector<Eigen::Vector2d>& points, const sph::ScreenCamera& camera, double x, double y,
+              double radius);
 // Mean world x, z of the SMALL particles.
 Eigen::Vector2d smallMeanXZ(const gsph::v1::Frame& frame);
 

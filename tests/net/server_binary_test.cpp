@@ -96,10 +96,23 @@ struct Child {
 };
 
 std::vector<std::string> serverArgs() {
-  return {SPH_SERVER_BINARY, "--scene", "tiny_pool", "--scene-dir", SPH_NET_TEST_SCENE_DIR,
-          "--method", "gaze", "--threads", "1",
-          "--frames-endpoint", "tcp://127.0.0.1:*", "--gaze-endpoint", "tcp://127.0.0.1:*",
-          "--pose-endpoint", "tcp://127.0.0.1:*", "--control-endpoint", "tcp://127.0.0.1:*"};
+  return {SPH_SERVER_BINARY,
+          "--scene",
+          "tiny_pool",
+          "--scene-dir",
+          SPH_NET_TEST_SCENE_DIR,
+          "--method",
+          "gaze",
+          "--threads",
+          "1",
+          "--frames-endpoint",
+          "tcp://127.0.0.1:*",
+          "--gaze-endpoint",
+          "tcp://127.0.0.1:*",
+          "--pose-endpoint",
+          "tcp://127.0.0.1:*",
+          "--control-endpoint",
+          "tcp://127.0.0.1:*"};
 }
 
 TEST(ServerBinary, HelpListsEveryEndpoint) {

@@ -155,8 +155,7 @@ TEST(ServerControl, SetParametersAllOrNothing) {
   EXPECT_DOUBLE_EQ(r.status().parameters().at("publish_hz"), 30.0);
 
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const Control& bad : {run.setParameters({{"no_such_parameter", 1.0}}),
-                             run.setParameters({{"gaze_radius", nan}}),
+  for (const Control& bad : {run.setParameters({{"no_such_parameter", 1.0}}), run.setParameters({{"gaze_radius", nan}}),
                              run.setParameters({{"gaze_radius", 0.2}, {"publish_hz", 0.0}}),
                              run.setParameters({{"gaze_radius", 0.5}}),  // beyond the ring radius
                              run.setParameters({{"quantized", 0.5}}), run.setParameters({})}) {

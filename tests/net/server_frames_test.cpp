@@ -106,8 +106,7 @@ struct GazeRun {
 
 TEST(ServerFrames, GazeSampleMovesTheRefinedRegion) {
   GazeRun run(net_test::testOptions(sph::Method::Gaze));
-  const sph::ScreenCamera camera =
-      sph::cameraFromSpec(scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR).camera);
+  const sph::ScreenCamera camera = sph::cameraFromSpec(scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR).camera);
 
   auto at_a = run.lookAt(0.25, 0.25, camera);
   ASSERT_TRUE(at_a);

@@ -74,8 +74,8 @@ TEST(ServerRobustness, FloodOnEveryInputLeavesOthersServed) {
   zmq::socket_t control(ctx, zmq::socket_type::dealer);
   control.set(zmq::sockopt::linger, 0);
   control.connect(ep.control);
-  const int raw_fds[] = {rawJunkConnection(ep.frames), rawJunkConnection(ep.gaze),
-                         rawJunkConnection(ep.pose), rawJunkConnection(ep.control)};
+  const int raw_fds[] = {rawJunkConnection(ep.frames), rawJunkConnection(ep.gaze), rawJunkConnection(ep.pose),
+                         rawJunkConnection(ep.control)};
 
   const std::string good_gaze = net_test::gazeSample(0.5, 0.5, 4).SerializeAsString();
   const auto junk = badPayloads(good_gaze);
@@ -151,7 +151,8 @@ TEST(ServerRobustness, StalledSubscriberDoesNotHoldTheStep) {
   ASSERT_TRUE(last);
   // The final frame goes out just before the loop marks itself finished.
   const auto finish_end = std::chrono::steady_clock::now() + net_test::kTimeout;
-  while (!server->finished() && std::chrono::steady_clock::now() < finish_end) reader.next(std::chrono::milliseconds(20));
+  while (!server->finished() && std::chrono::steady_clock::now() < finish_end)
+    reader.next(std::chrono::milliseconds(20));
   EXPECT_TRUE(server->finished());
   EXPECT_GT(server->netCounters().frames_sent.load(), static_cast<std::uint64_t>(kSteps) / 2);
   ::close(silent_fd);

@@ -78,9 +78,9 @@ TEST(SceneLoader, NegativeAndNonFiniteSizesAreRejected) {
   EXPECT_NE(errorOf(withKey(R"("cylinders": [{"x": "nan", "z": 0, "radius": 0.1}])")).find("cylinders[0].x"),
             std::string::npos);
   EXPECT_NE(errorOf(withKey(R"("params": {"rest_density": 0})")).find("params.rest_density"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"box": {"min": [0,0,0], "max": [1,-1,1]}, "water": {"min": [0,0,0], "max": [1,1,1]}})")
-                .find("'box'"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({"box": {"min": [0,0,0], "max": [1,-1,1]}, "water": {"min": [0,0,0], "max": [1,1,1]}})").find("'box'"),
+      std::string::npos);
 }
 
 TEST(SceneLoader, WaterOutsideTheBoxIsRejected) {
@@ -114,11 +114,10 @@ TEST(SceneLoader, WaterRegionTooSmallForTheParticlesFailsToFill) {
 }
 
 TEST(SceneLoader, MethodAdaptiveSettingsAndGazeRecordingAreRead) {
-  const sph::Scene s = scene::parseScene(
-      withKey(R"("method": "hybrid", "gaze_recording": "x.gaze.csv",
+  const sph::Scene s = scene::parseScene(withKey(R"("method": "hybrid", "gaze_recording": "x.gaze.csv",
                  "adaptive": {"gaze_radius": 0.07, "gaze_ring_radius": 0.1, "alpha": 0.5,
                               "surface_includes_walls": false})"),
-      "test.json");
+                                         "test.json");
   EXPECT_EQ(s.method, "hybrid");
   EXPECT_EQ(s.gaze_recording, "x.gaze.csv");
   EXPECT_DOUBLE_EQ(s.adaptive.gaze_radius, 0.07);

@@ -60,7 +60,7 @@ TEST(Boundary, StateAtAppliesMovingWall) {
 
 TEST(Boundary, EnclosingBoxCoversChangesAndWallReach) {
   sph::Boundary b = dambreak();
-  b.moving_walls.push_back(sph::MovingWall{1, true, 0.25, 2.0, 0.5});    // roof moves up
+  b.moving_walls.push_back(sph::MovingWall{1, true, 0.25, 2.0, 0.5});   // roof moves up
   b.moving_walls.push_back(sph::MovingWall{2, false, -0.2, 1.0, 0.0});  // z-min moves out
   b.moving_walls.push_back(sph::MovingWall{2, true, -0.1, 1.0, 0.0});   // z-max moves in
   const sph::Aabb all = b.enclosingBox();

@@ -65,7 +65,8 @@ TEST(CoincidentPairs, PressurePushesThemApartAndConservesMomentum) {
     EXPECT_LT(total.norm(), 1e-4 * magnitude) << (vector ? "vector" : "scalar");
     // The stacked particles no longer move as one.
     for (std::size_t i = 1; i < 24; ++i) {
-      EXPECT_GT((p.acceleration[i] - p.acceleration[0]).norm(), 1.0f) << "particle " << i << (vector ? " vector" : " scalar");
+      EXPECT_GT((p.acceleration[i] - p.acceleration[0]).norm(), 1.0f)
+          << "particle " << i << (vector ? " vector" : " scalar");
     }
   }
 }

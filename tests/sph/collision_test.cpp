@@ -138,9 +138,10 @@ TEST(CollideBox, NoContactLeavesParticleUnchanged) {
 }
 
 // integrateAndCollide (its vectorised loop for a bare box, its general loop otherwise) must move
-// and clamp as eqs. (3.21)-(3.22) and the per-particle collision functions applied in order (spheres, cylinders, box): particles of both classes crossing every face, fast enough to
-// cross two at once, between moving walls; with no obstacle, with one out of reach, and with a
-// sphere and two cylinders in the way (particles on the sphere's centre and a cylinder's axis).
+// and clamp as eqs. (3.21)-(3.22) and the per-particle collision functions applied in order (spheres, cylinders, box):
+// particles of both classes crossing every face, fast enough to cross two at once, between moving walls; with no
+// obstacle, with one out of reach, and with a sphere and two cylinders in the way (particles on the sphere's centre and
+// a cylinder's axis).
 class IntegrateAndCollide : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -153,8 +154,8 @@ class IntegrateAndCollide : public ::testing::Test {
     std::uniform_real_distribution<float> speed(-8.0f, 8.0f);
     while (particles_.size() < particles_.capacity()) {
       const sph::SizeClass c = particles_.size() % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
-      const std::uint32_t k = particles_.add(Vec3(pos(rng), pos(rng), pos(rng)), Vec3(speed(rng), speed(rng), speed(rng)),
-                                             c, classes[sph::classIndex(c)]);
+      const std::uint32_t k = particles_.add(Vec3(pos(rng), pos(rng), pos(rng)),
+                                             Vec3(speed(rng), speed(rng), speed(rng)), c, classes[sph::classIndex(c)]);
       particles_.acceleration[k] = Vec3(speed(rng), speed(rng), speed(rng)) * 100.0f;
     }
     // Two particles on the sphere's centre and one on a cylinder's axis (after this step's move).

@@ -79,8 +79,8 @@ TEST(Density, MixedPairUsesAveragedKernel) {
   sph::computeDensityPressure(params, kernels, grid, particles);
 
   const double r2 = (particles.position[0] - particles.position[1]).squaredNorm();
-  const double w_pair = 0.5 * (sph::poly6(kernels[0], static_cast<float>(r2)) +
-                               sph::poly6(kernels[1], static_cast<float>(r2)));
+  const double w_pair =
+      0.5 * (sph::poly6(kernels[0], static_cast<float>(r2)) + sph::poly6(kernels[1], static_cast<float>(r2)));
   for (int i = 0; i < 2; ++i) {
     const int j = 1 - i;
     const double expected = particles.mass[i] * sph::poly6(kernels[i], 0.0f) + particles.mass[j] * w_pair;

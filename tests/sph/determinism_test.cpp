@@ -41,7 +41,9 @@ RunResult runWithThreads(int threads, int steps) {
   return {p.id, p.position, p.velocity, p.radius};
 }
 
-bool sameBits(const sph::Vec3& a, const sph::Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(float) * 3) == 0; }
+bool sameBits(const sph::Vec3& a, const sph::Vec3& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(float) * 3) == 0;
+}
 
 TEST(Simulation, ResultIndependentOfThreadCount) {
   constexpr int kSteps = 60;

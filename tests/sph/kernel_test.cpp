@@ -132,8 +132,7 @@ TEST(Kernel, ViscosityLaplacianMatchesFormula) {
     for (double f : {0.0, 0.2, 0.5, 0.9, 1.0}) {
       const double r = f * h;
       const double expected = c * (h - r);
-      EXPECT_NEAR(sph::viscosityLaplacian(k, static_cast<float>(r)), expected, 1e-5 * c * h + 1e-6)
-          << "at r/h = " << f;
+      EXPECT_NEAR(sph::viscosityLaplacian(k, static_cast<float>(r)), expected, 1e-5 * c * h + 1e-6) << "at r/h = " << f;
     }
     EXPECT_EQ(sph::viscosityLaplacian(k, 1.001f * k.h), 0.0f);
     EXPECT_EQ(sph::viscosityLaplacian(k, 2.0f * k.h), 0.0f);

@@ -42,13 +42,14 @@ void makeCloud(Cloud& cloud, const CloudShape& shape) {
   while (cloud.particles.size() < cloud.particles.capacity()) {
     const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
     const float e = shape.extent / 0.3f;
-    const std::uint32_t k = cloud.particles.add(sph::Vec3(e * pos(rng), e * pos(rng) * 0.5f, e * pos(rng)),
-                                                sph::Vec3(vel(rng), vel(rng), vel(rng)), c,
-                                                classes[sph::classIndex(c)]);
+    const std::uint32_t k =
+        cloud.particles.add(sph::Vec3(e * pos(rng), e * pos(rng) * 0.5f, e * pos(rng)),
+                            sph::Vec3(vel(rng), vel(rng), vel(rng)), c, classes[sph::classIndex(c)]);
     cloud.particles.surface_distance[k] = unreached(rng) ? std::numeric_limits<float>::infinity() : dist(rng);
   }
   for (int c = 0; c < shape.coincident; ++c) {
-    cloud.particles.position[2 * static_cast<std::size_t>(c) + 1] = cloud.particles.position[2 * static_cast<std::size_t>(c)];
+    cloud.particles.position[2 * static_cast<std::size_t>(c) + 1] =
+        cloud.particles.position[2 * static_cast<std::size_t>(c)];
   }
   sph::Aabb bounds;
   bounds.min = Eigen::Vector3d::Zero();
@@ -60,7 +61,8 @@ void makeCloud(Cloud& cloud, const CloudShape& shape) {
 
 // |a - b| within `rel` of `scale` (the mean magnitude of the quantity over the cloud).
 void expectClose(float a, float b, double scale, double rel, const char* what, std::size_t i) {
-  EXPECT_LE(std::abs(static_cast<double>(a) - b), rel * scale) << what << " of particle " << i << ": " << a << " vs " << b;
+  EXPECT_LE(std::abs(static_cast<double>(a) - b), rel * scale)
+      << what << " of particle " << i << ": " << a << " vs " << b;
 }
 
 void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& shape = {}) {

@@ -30,9 +30,9 @@ struct System {
     gaze_bridge::GazepointParams gp;
     gp.port = tracker->port();
     // Unfiltered so the point that arrives is the tracker's; the server's SUB is the bridge's target.
-    bridge = std::make_unique<gaze_bridge_test::BridgeThread>(
-        context, std::make_unique<gaze_bridge::GazepointSource>(gp),
-        gaze_bridge_test::rawParams(server->endpoints().gaze));
+    bridge =
+        std::make_unique<gaze_bridge_test::BridgeThread>(context, std::make_unique<gaze_bridge::GazepointSource>(gp),
+                                                         gaze_bridge_test::rawParams(server->endpoints().gaze));
     frames = std::make_unique<net_test::FrameSubscriber>(context, server->endpoints().frames);
   }
   ~System() {
@@ -40,19 +40,20 @@ struct System {
     server->stop();
   }
   // Streams the point as the tracker would (60 Hz records) until a frame satisfies `accept`.
-  std::optional<gsph::v1::Frame> lookAt(double x, double y,
-                                        const std::function<bool(const gsph::v1::Frame&)>& accept) {
-    return frames->waitFor(accept, [&] {
-      tracker_time += 1.0 / 60.0;
-      tracker->send(gaze_bridge_test::gazepointRecord(tracker_time, x, y, true));
-    }, 20s);
+  std::optional<gsph::v1::Frame> lookAt(double x, double y, const std::function<bool(const gsph::v1::Frame&)>& accept) {
+    return frames->waitFor(
+        accept,
+        [&] {
+          tracker_time += 1.0 / 60.0;
+          tracker->send(gaze_bridge_test::gazepointRecord(tracker_time, x, y, true));
+        },
+        20s);
   }
 };
 
 TEST(TrackerToFrames, EmulatedGazepointGazeRefinesWhereItLooks) {
   System sys;
-  const sph::ScreenCamera camera =
-      sph::cameraFromSpec(scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR).camera);
+  const sph::ScreenCamera camera = sph::cameraFromSpec(scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR).camera);
   const auto refinedAt = [&](double x, double y) {
     return [&camera, x, y](const gsph::v1::Frame& f) {
       if (f.gaze().mode() != gsph::v1::GAZE_MODE_TRACKING) return false;

@@ -61,12 +61,13 @@ int main(int argc, char** argv) {
       spec.particles[i].x = base[i].x + 0.2f * static_cast<float>(std::sin(2.0 * t + base[i].y * 4.0));
     }
     auto frame = viewer_test::makeFrame(spec, seq);
-    frame.set_send_time_us(std::chrono::duration_cast<std::chrono::microseconds>(
-                               std::chrono::system_clock::now().time_since_epoch()).count());
+    frame.set_send_time_us(
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+            .count());
     frame.SerializeToString(&bytes);
     (void)pub.send(zmq::buffer(bytes), zmq::send_flags::dontwait);
-    std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                              period * static_cast<double>(seq)));
+    std::this_thread::sleep_until(
+        start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * static_cast<double>(seq)));
   }
   return 0;
 }

@@ -24,8 +24,7 @@ inline Mat4d referenceLookAt(const Vec3d& eye, const Vec3d& target) {
   const Vec3d s = norm(cross(f, {0, 1, 0}));
   const Vec3d u = cross(s, f);
   // rows s, u, -f; translation -R eye
-  return {s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0,
-          -dot(s, eye), -dot(u, eye), dot(f, eye), 1};
+  return {s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0, -dot(s, eye), -dot(u, eye), dot(f, eye), 1};
 }
 
 inline Mat4d referencePerspective(double fov_y_degrees, double aspect, double n, double f) {
@@ -34,8 +33,8 @@ inline Mat4d referencePerspective(double fov_y_degrees, double aspect, double n,
 }
 
 // World point -> pixel (origin top left) through column-major view and projection.
-inline std::array<double, 2> projectToPixel(const float* view, const float* projection, const Vec3d& p,
-                                            int width, int height) {
+inline std::array<double, 2> projectToPixel(const float* view, const float* projection, const Vec3d& p, int width,
+                                            int height) {
   double v[4], c[4];
   for (int r = 0; r < 4; ++r) {
     v[r] = view[r] * p[0] + view[4 + r] * p[1] + view[8 + r] * p[2] + view[12 + r];

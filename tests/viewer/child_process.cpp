@@ -93,8 +93,8 @@ VirtualDisplay::VirtualDisplay() {
   int fds[2];
   if (::pipe(fds) != 0) throw std::runtime_error("pipe failed");
   const std::string fd = std::to_string(fds[1]);
-  std::vector<std::string> argv = {"/usr/bin/Xvfb", "-displayfd", fd, "-screen", "0", "1280x1024x24",
-                                   "-nolisten", "tcp", "-noreset"};
+  std::vector<std::string> argv = {"/usr/bin/Xvfb", "-displayfd", fd,    "-screen", "0",
+                                   "1280x1024x24",  "-nolisten",  "tcp", "-noreset"};
   auto args = cArgs(argv);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);

@@ -23,7 +23,7 @@ TEST(OutlineGeometry, ScreenCircleRadiusIsAFractionOfWidth) {
   // centre in NDC: x = 2*0.25-1 = -0.5, y = 1-2*0.75 = -0.5; in pixels the circle is round:
   // radius 0.05 W in x, and 0.05 W = 0.05 * aspect * H in y
   for (const auto& v : lines) {
-    const float px = (v.x + 0.5f) / 2.0f;           // in widths
+    const float px = (v.x + 0.5f) / 2.0f;                    // in widths
     const float py = (v.y + 0.5f) / 2.0f * (1.0f / aspect);  // in widths
     EXPECT_NEAR(std::sqrt(px * px + py * py), 0.05f, 1e-4f);
   }

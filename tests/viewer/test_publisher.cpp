@@ -53,8 +53,8 @@ TestServer::~TestServer() {
 }
 
 std::vector<std::string> TestServer::endpointArgs() const {
-  return {"--frames-endpoint", frames_endpoint_, "--pose-endpoint", pose_endpoint_,
-          "--gaze-endpoint", gaze_endpoint_, "--control-endpoint", control_endpoint_};
+  return {"--frames-endpoint", frames_endpoint_, "--pose-endpoint",    pose_endpoint_,
+          "--gaze-endpoint",   gaze_endpoint_,   "--control-endpoint", control_endpoint_};
 }
 
 void TestServer::replaceFrame(gsph::v1::Frame frame) {

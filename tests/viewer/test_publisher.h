@@ -20,8 +20,7 @@ namespace viewer_test {
 class TestServer {
  public:
   // `frames_endpoint` empty: bind tcp://127.0.0.1:*; otherwise bind exactly there (restart tests).
-  explicit TestServer(gsph::v1::Frame frame, const std::string& frames_endpoint = "",
-                      std::uint64_t first_sequence = 1,
+  explicit TestServer(gsph::v1::Frame frame, const std::string& frames_endpoint = "", std::uint64_t first_sequence = 1,
                       std::chrono::milliseconds publish_period = std::chrono::milliseconds(20));
   ~TestServer();
 
@@ -33,10 +32,10 @@ class TestServer {
   std::vector<std::string> endpointArgs() const;
 
   // Waits (polling, bounded) until `predicate` holds for the received messages.
-  bool waitForPose(const std::function<bool(const gsph::v1::CameraPose&)>& predicate,
-                   std::chrono::milliseconds timeout, gsph::v1::CameraPose* out = nullptr);
-  bool waitForGaze(const std::function<bool(const gsph::v1::GazeSample&)>& predicate,
-                   std::chrono::milliseconds timeout, gsph::v1::GazeSample* out = nullptr);
+  bool waitForPose(const std::function<bool(const gsph::v1::CameraPose&)>& predicate, std::chrono::milliseconds timeout,
+                   gsph::v1::CameraPose* out = nullptr);
+  bool waitForGaze(const std::function<bool(const gsph::v1::GazeSample&)>& predicate, std::chrono::milliseconds timeout,
+                   gsph::v1::GazeSample* out = nullptr);
   bool subscribed() const { return subscribed_; }
   std::size_t posesReceived() const;
   void replaceFrame(gsph::v1::Frame frame);

@@ -27,8 +27,8 @@ FrameSpec oneParticle(std::uint8_t size_class) {
 }
 
 std::vector<std::string> viewerArgs(const TestServer& server, const std::string& id, std::vector<std::string> more) {
-  std::vector<std::string> args = {"--width", std::to_string(kWidth), "--height", std::to_string(kHeight),
-                                   "--viewer-id", id, "--no-panel"};
+  std::vector<std::string> args = {
+      "--width", std::to_string(kWidth), "--height", std::to_string(kHeight), "--viewer-id", id, "--no-panel"};
   const auto endpoints = server.endpointArgs();
   args.insert(args.end(), endpoints.begin(), endpoints.end());
   args.insert(args.end(), more.begin(), more.end());
@@ -57,9 +57,9 @@ std::pair<int, int> waitForWindow(X11Input& x, const std::string& title) {
 TEST(ViewerPose, MatchesTheCameraOptionsAndKeepsComing) {
   const std::string dir = scratchDir();
   TestServer server(makeFrame(oneParticle(0), 1));
-  auto viewer = startViewer(viewerArgs(server, "pose-test", {"--eye", "1", "1.3", "2.7", "--target", "1", "0.15", "0.4",
-                                                             "--fov", "50"}),
-                            dir + "/viewer.log");
+  auto viewer = startViewer(
+      viewerArgs(server, "pose-test", {"--eye", "1", "1.3", "2.7", "--target", "1", "0.15", "0.4", "--fov", "50"}),
+      dir + "/viewer.log");
   gsph::v1::CameraPose first, later;
   ASSERT_TRUE(server.waitForPose([](const auto& p) { return p.viewer_id() == "pose-test"; }, kWait, &first))
       << readFile(dir + "/viewer.log");
@@ -82,13 +82,15 @@ TEST(ViewerPose, MatchesTheCameraOptionsAndKeepsComing) {
 TEST(ViewerPose, MouseDragOrbitsTheCameraAndThePoseFollows) {
   const std::string dir = scratchDir();
   TestServer server(makeFrame(oneParticle(1), 1));
-  auto viewer = startViewer(viewerArgs(server, "drag", {"--eye", "0", "0.5", "2", "--target", "0", "0", "0", "--mouse-gaze"}),
-                            dir + "/viewer.log");
+  auto viewer =
+      startViewer(viewerArgs(server, "drag", {"--eye", "0", "0.5", "2", "--target", "0", "0", "0", "--mouse-gaze"}),
+                  dir + "/viewer.log");
   X11Input x;
   const auto [wx, wy] = waitForWindow(x, "sph_viewer drag");
   // Park the pointer and wait until the viewer has seen it there (its mouse gaze reports it).
   x.movePointer(wx + 100, wy + 120);
-  ASSERT_TRUE(server.waitForGaze([](const auto& g) { return g.valid() && std::abs(g.x() * kWidth - 100) < 1.5; }, kWait))
+  ASSERT_TRUE(
+      server.waitForGaze([](const auto& g) { return g.valid() && std::abs(g.x() * kWidth - 100) < 1.5; }, kWait))
       << readFile(dir + "/viewer.log");
   x.button(1, true);
   for (int step = 1; step <= 5; ++step) x.movePointer(wx + 100 + 20 * step, wy + 120);
@@ -119,7 +121,8 @@ TEST(ViewerGaze, MouseGazeFollowsTheCursorAndGoesInvalidOutside) {
   EXPECT_EQ(sample.protocol_version(), 1u);
   x.movePointer(wx + 240, wy + 60);
   EXPECT_TRUE(server.waitForGaze(
-      [](const auto& g) { return g.valid() && std::abs(g.x() - 0.75) < 0.01 && std::abs(g.y() - 0.25) < 0.01; }, kWait));
+      [](const auto& g) { return g.valid() && std::abs(g.x() - 0.75) < 0.01 && std::abs(g.y() - 0.25) < 0.01; },
+      kWait));
   x.movePointer(wx + kWidth + 200, wy + 60);
   EXPECT_TRUE(server.waitForGaze([](const auto& g) { return !g.valid(); }, kWait));
   viewer->terminate();
@@ -181,9 +184,9 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   viewer::RgbaImage image;
   std::string error;
   ASSERT_TRUE(viewer::readPng(dir + "/after.png", image, error)) << error;
-  const auto centre = projectToPixel(std::vector<float>(view.begin(), view.end()).data(),
-                                     std::vector<float>(projection.begin(), projection.end()).data(), {0, 0, 0}, kWidth,
-                                     kHeight);
+  const auto centre =
+      projectToPixel(std::vector<float>(view.begin(), view.end()).data(),
+                     std::vector<float>(projection.begin(), projection.end()).data(), {0, 0, 0}, kWidth, kHeight);
   const Colour c = pixel(image, static_cast<int>(centre[0]), static_cast<int>(centre[1]));
   EXPECT_TRUE(isBlue(c)) << c.r << " " << c.g << " " << c.b;
 }

@@ -52,8 +52,8 @@ class ServerProcess {
   }
   const ServerEndpoints& endpoints() const { return endpoints_; }
   std::vector<std::string> viewerArgs() const {
-    return {"--frames-endpoint", endpoints_.frames, "--gaze-endpoint", endpoints_.gaze,
-            "--pose-endpoint", endpoints_.pose, "--control-endpoint", endpoints_.control};
+    return {"--frames-endpoint", endpoints_.frames, "--gaze-endpoint",    endpoints_.gaze,
+            "--pose-endpoint",   endpoints_.pose,   "--control-endpoint", endpoints_.control};
   }
   std::string log() const { return readFile(log_); }
 
@@ -119,7 +119,8 @@ std::vector<std::array<double, 2>> smallOnScreen(const gsph::v1::Frame& frame) {
   for (std::size_t i = 0; i < decoded.particleCount(); ++i) {
     if (decoded.classes[i] != viewer::kClassSmall) continue;
     const auto& p = decoded.positions[i];
-    const auto px = projectToPixel(frame.camera().view().data(), frame.camera().projection().data(), {p.x, p.y, p.z}, 1, 1);
+    const auto px =
+        projectToPixel(frame.camera().view().data(), frame.camera().projection().data(), {p.x, p.y, p.z}, 1, 1);
     out.push_back(px);
   }
   return out;
@@ -155,9 +156,13 @@ TEST(ViewerServerRoundTrip, ServerProjectsWithTheViewersPose) {
   const Mat4d expected = referenceLookAt({0.9, 1.1, 1.6}, {0.3, 0.1, 0.3});
   gsph::v1::Frame frame;
   EXPECT_TRUE(frames.waitFor(
-      [&](const gsph::v1::Frame& f) { return f.camera().viewer_id() == "rt-pose" && viewNear(f.camera(), expected, 1e-4); },
+      [&](const gsph::v1::Frame& f) {
+        return f.camera().viewer_id() == "rt-pose" && viewNear(f.camera(), expected, 1e-4);
+      },
       &frame))
-      << "viewer:\n" << readFile(dir + "/viewer.log") << "server:\n" << server.log();
+      << "viewer:\n"
+      << readFile(dir + "/viewer.log") << "server:\n"
+      << server.log();
   EXPECT_EQ(frame.camera().viewport_width(), static_cast<unsigned>(kWidth));
   EXPECT_EQ(frame.camera().viewport_height(), static_cast<unsigned>(kHeight));
   viewer->terminate();
@@ -191,18 +196,21 @@ TEST(ViewerServerRoundTrip, MouseGazeMovesTheRefinedRegion) {
   ASSERT_TRUE(viewer::decodeFrame(frame, decoded, error)) << error;
   std::vector<std::array<double, 2>> water;
   for (const auto& p : decoded.positions) {
-    water.push_back(projectToPixel(frame.camera().view().data(), frame.camera().projection().data(), {p.x, p.y, p.z}, 1, 1));
+    water.push_back(
+        projectToPixel(frame.camera().view().data(), frame.camera().projection().data(), {p.x, p.y, p.z}, 1, 1));
   }
   std::sort(water.begin(), water.end());
   // Two gaze points on the water, left and right, far enough apart that their rings do not touch.
   const auto a = water[water.size() / 5], b = water[water.size() * 4 / 5];
   ASSERT_GT(b[0] - a[0], 0.2) << "the water spans too little of the screen for this test";
   for (const auto& target : {a, b}) {
-    x.movePointer(origin->first + static_cast<int>(target[0] * kWidth), origin->second + static_cast<int>(target[1] * kHeight));
+    x.movePointer(origin->first + static_cast<int>(target[0] * kWidth),
+                  origin->second + static_cast<int>(target[1] * kHeight));
     const double gx = std::floor(target[0] * kWidth) / kWidth, gy = std::floor(target[1] * kHeight) / kHeight;
     // Inside the ring (0.08 W) plus a particle radius of slack.
     EXPECT_TRUE(frames.waitFor([&](const gsph::v1::Frame& f) { return refinedAround(f, gx, gy, 0.1); }))
-        << "no refinement around " << gx << "," << gy << "\n" << server.log();
+        << "no refinement around " << gx << "," << gy << "\n"
+        << server.log();
   }
   viewer->terminate();
   EXPECT_TRUE(viewer->waitExit(20s).has_value());

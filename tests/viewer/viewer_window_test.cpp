@@ -30,8 +30,14 @@ FrameSpec fourParticles() {
 }
 
 std::vector<std::string> cameraArgs() {
-  return {"--eye", "0", "0", "2.5", "--target", "0", "0", "0", "--fov", "45",
-          "--width", std::to_string(kWidth), "--height", std::to_string(kHeight), "--no-panel"};
+  return {"--eye",     "0",
+          "0",         "2.5",
+          "--target",  "0",
+          "0",         "0",
+          "--fov",     "45",
+          "--width",   std::to_string(kWidth),
+          "--height",  std::to_string(kHeight),
+          "--no-panel"};
 }
 
 std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -84,10 +90,10 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
   FrameSpec spec = fourParticles();
   spec.with_gaze = true;  // circle of 0.1 W around the screen centre
   TestServer server(makeFrame(spec, 1));
-  auto viewer = startViewer(join(join(cameraArgs(), server.endpointArgs()),
-                                 {"--snapshot", dir + "/window.png", "--frames", "3", "--visible",
-                                  "--viewer-id", "pixels"}),
-                            dir + "/viewer.log");
+  auto viewer =
+      startViewer(join(join(cameraArgs(), server.endpointArgs()),
+                       {"--snapshot", dir + "/window.png", "--frames", "3", "--visible", "--viewer-id", "pixels"}),
+                  dir + "/viewer.log");
   const auto code = viewer->waitExit(60s);
   ASSERT_TRUE(code.has_value()) << readFile(dir + "/viewer.log");
   ASSERT_EQ(*code, 0) << readFile(dir + "/viewer.log");
@@ -136,7 +142,8 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
   }
   int coloured = 0;
   for (int y = 0; y < images[0].height; ++y) {
-    for (int x = 0; x < images[0].width; ++x) coloured += isBlue(pixel(images[0], x, y)) || isRed(pixel(images[0], x, y));
+    for (int x = 0; x < images[0].width; ++x)
+      coloured += isBlue(pixel(images[0], x, y)) || isRed(pixel(images[0], x, y));
   }
   EXPECT_GT(coloured, 2000);  // the cloud is really there
   std::string where;

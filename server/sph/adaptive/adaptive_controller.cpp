@@ -30,8 +30,7 @@ void requireTwoToOneMasses(const SimParams& params) {
 
 }  // namespace
 
-AdaptiveController::AdaptiveController(Method method, const AdaptiveConfig& config,
-                                       const ScreenCamera& camera)
+AdaptiveController::AdaptiveController(Method method, const AdaptiveConfig& config, const ScreenCamera& camera)
     : method_(method), config_(config), camera_(camera) {
   requireAdaptive(method);
   config_.validate();
@@ -92,8 +91,8 @@ void AdaptiveController::apply(Simulation& sim) {
     // Stragglers pair within two SMALL support radii: far enough to reach a sibling left behind
     // in LARGE water, near enough that the merged particle lands inside the water between them.
     const auto classes = sim.params().classes();
-    pairStragglers(p, decision_, partner_,
-                   2.0f * static_cast<float>(classes[classIndex(SizeClass::Small)].support), stragglers_);
+    pairStragglers(p, decision_, partner_, 2.0f * static_cast<float>(classes[classIndex(SizeClass::Small)].support),
+                   stragglers_);
   } else {
     std::fill(partner_.begin(), partner_.end(), -1);
   }
@@ -106,8 +105,7 @@ void AdaptiveController::apply(Simulation& sim) {
   stats_.gaze_age_s = gaze_.age_s;
 }
 
-std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method,
-                                                           const AdaptiveConfig& config,
+std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, const AdaptiveConfig& config,
                                                            const ScreenCamera& camera) {
   if (method == Method::Regular) return nullptr;
   return std::make_unique<AdaptiveController>(method, config, camera);

@@ -16,12 +16,12 @@
 namespace sph {
 
 struct AdaptiveStats {
-  int splits = 0;          // LARGE particles split this step
-  int merges = 0;          // SMALL pairs merged this step
-  int split_wanted = 0;    // particles whose decision was SPLIT (including ones with no room)
-  int merge_wanted = 0;    // particles whose decision was MERGE (including unpaired ones)
+  int splits = 0;        // LARGE particles split this step
+  int merges = 0;        // SMALL pairs merged this step
+  int split_wanted = 0;  // particles whose decision was SPLIT (including ones with no room)
+  int merge_wanted = 0;  // particles whose decision was MERGE (including unpaired ones)
   GazeMode gaze_mode = GazeMode::None;
-  double gaze_x = 0.5;     // the gaze point the step used (normalized, origin top left)
+  double gaze_x = 0.5;  // the gaze point the step used (normalized, origin top left)
   double gaze_y = 0.5;
   double gaze_age_s = 0.0;
 };
@@ -63,8 +63,7 @@ class AdaptiveController : public AdaptiveStep {
 };
 
 // nullptr for Method::Regular.
-std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method,
-                                                           const AdaptiveConfig& config,
+std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, const AdaptiveConfig& config,
                                                            const ScreenCamera& camera);
 
 }  // namespace sph

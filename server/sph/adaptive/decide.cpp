@@ -101,8 +101,9 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
   const BoxState box = sim.boxNow();
   const Boundary& boundary = sim.scene().boundary;
   const bool obstacles = !boundary.spheres.empty() || !boundary.cylinders.empty();
-  const SurfaceArrays arrays{p.position.data()->data(), p.surface_hop.data(), p.normal_length.data(),
-                             p.pressure.data(), p.size_class.data(), sim.grid().neighborCounts().data(),
+  const SurfaceArrays arrays{p.position.data()->data(), p.surface_hop.data(),
+                             p.normal_length.data(),    p.pressure.data(),
+                             p.size_class.data(),       sim.grid().neighborCounts().data(),
                              p.surface_distance.data(), out.data()};
 
   // Character field, eq. (3.45), and the decision, eq. (3.46). N_max is taken per size class: the
@@ -127,9 +128,10 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
     const ThreadShare share = threadShare(n);
     const std::size_t begin = share.begin;
     const std::size_t end = share.end;
-    const FieldMaxima mine =
-        obstacles ? surfaceDistances<true>(arrays, begin, end, surface_threshold, config.surface_includes_walls, box, boundary)
-                  : surfaceDistances<false>(arrays, begin, end, surface_threshold, config.surface_includes_walls, box, boundary);
+    const FieldMaxima mine = obstacles ? surfaceDistances<true>(arrays, begin, end, surface_threshold,
+                                                                config.surface_includes_walls, box, boundary)
+                                       : surfaceDistances<false>(arrays, begin, end, surface_threshold,
+                                                                 config.surface_includes_walls, box, boundary);
 #pragma omp critical(sph_surface_maxima)
     {
       all.pressure = std::max(all.pressure, mine.pressure);
@@ -185,9 +187,9 @@ struct GazeCircle {
 
 // Particles [begin, end): single precision, no branches and restrict-qualified arrays (the
 // decisions are bytes, which may otherwise alias anything), so that GCC vectorises the loop.
-DecisionCounts decideGazeRange(const GazeCircle& shared, const float* __restrict xyz,
-                               const float* __restrict radius, const SizeClass* __restrict size_class,
-                               std::int8_t* __restrict out, std::size_t begin, std::size_t end, bool hybrid) {
+DecisionCounts decideGazeRange(const GazeCircle& shared, const float* __restrict xyz, const float* __restrict radius,
+                               const SizeClass* __restrict size_class, std::int8_t* __restrict out, std::size_t begin,
+                               std::size_t end, bool hybrid) {
   const GazeCircle gaze = shared;
   int split_wanted = 0;
   int merge_wanted = 0;
@@ -216,9 +218,8 @@ DecisionCounts decideGazeRange(const GazeCircle& shared, const float* __restrict
 
 }  // namespace
 
-DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
-                            double gaze_y, const AdaptiveConfig& config, bool hybrid,
-                            std::span<std::int8_t> out) {
+DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x, double gaze_y,
+                            const AdaptiveConfig& config, bool hybrid, std::span<std::int8_t> out) {
   const Projector projector(camera);
   const GazeCircle gaze{projector.fast(),
                         static_cast<float>(gaze_x),
@@ -234,8 +235,8 @@ DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& ca
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted)
   {
     const ThreadShare share = threadShare(n);
-    const DecisionCounts mine = decideGazeRange(gaze, xyz, radius, particles.size_class.data(), out.data(),
-                                                share.begin, share.end, hybrid);
+    const DecisionCounts mine =
+        decideGazeRange(gaze, xyz, radius, particles.size_class.data(), out.data(), share.begin, share.end, hybrid);
     split_wanted += mine.split_wanted;
     merge_wanted += mine.merge_wanted;
   }

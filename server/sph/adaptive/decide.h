@@ -42,8 +42,7 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
 // rule: SPLIT only where both ask for it, MERGE where either does, else REMAIN (one pass, so the
 // hybrid method costs no more than gaze and surface together). Both return the counts of the
 // decisions they leave in `out`.
-DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x,
-                            double gaze_y, const AdaptiveConfig& config, bool hybrid,
-                            std::span<std::int8_t> out);
+DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& camera, double gaze_x, double gaze_y,
+                            const AdaptiveConfig& config, bool hybrid, std::span<std::int8_t> out);
 
 }  // namespace sph

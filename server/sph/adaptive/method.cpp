@@ -20,9 +20,8 @@ constexpr MethodEntry kMethods[] = {
 
 void requireRange(const char* key, double v, double lo, double hi) {
   if (!std::isfinite(v) || v < lo || v > hi) {
-    throw std::invalid_argument(std::string("adaptive setting '") + key + "' must be in [" +
-                                std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                                std::to_string(v));
+    throw std::invalid_argument(std::string("adaptive setting '") + key + "' must be in [" + std::to_string(lo) + ", " +
+                                std::to_string(hi) + "], got " + std::to_string(v));
   }
 }
 
@@ -57,10 +56,14 @@ bool usesGaze(Method m) { return m == Method::Gaze || m == Method::Hybrid; }
 
 const char* gazeModeName(GazeMode m) {
   switch (m) {
-    case GazeMode::None: return "none";
-    case GazeMode::Tracking: return "tracking";
-    case GazeMode::Holding: return "holding";
-    case GazeMode::Fallback: return "fallback";
+    case GazeMode::None:
+      return "none";
+    case GazeMode::Tracking:
+      return "tracking";
+    case GazeMode::Holding:
+      return "holding";
+    case GazeMode::Fallback:
+      return "fallback";
   }
   return "unknown";
 }

@@ -23,10 +23,10 @@ bool usesGaze(Method m);
 
 struct AdaptiveConfig {
   // Character field (3.45), table 3.2.
-  double alpha = 0.8;       // geometric weight
-  double beta = 0.01;       // dynamic (pressure) weight
-  double gamma = 0.1;       // isolation weight
-  double threshold = 0.225; // T in (3.46): SPLIT if cf < T, MERGE if cf >= 2T
+  double alpha = 0.8;        // geometric weight
+  double beta = 0.01;        // dynamic (pressure) weight
+  double gamma = 0.1;        // isolation weight
+  double threshold = 0.225;  // T in (3.46): SPLIT if cf < T, MERGE if cf >= 2T
   // Box walls count as "boundary" for d in (3.45) when true (He et al.; the thesis's figure 3.2).
   bool surface_includes_walls = true;
   // A particle is a surface particle for (3.44) where |n| >= surface_normal_scale * l. The thesis

@@ -89,8 +89,8 @@ std::int32_t nearestMergingNeighbourAvx512(const float* pos, const std::uint32_t
     const __m512 d2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
     const __m512i id = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), candidate, j, ids, 4);
     const __mmask16 nearer = _mm512_mask_cmp_ps_mask(candidate, d2, best_d2, _CMP_LT_OQ);
-    const __mmask16 tie = _mm512_mask_cmp_ps_mask(candidate, d2, best_d2, _CMP_EQ_OQ) &
-                          _mm512_cmplt_epu32_mask(id, best_id);
+    const __mmask16 tie =
+        _mm512_mask_cmp_ps_mask(candidate, d2, best_d2, _CMP_EQ_OQ) & _mm512_cmplt_epu32_mask(id, best_id);
     const __mmask16 better = nearer | tie;
     best_d2 = _mm512_mask_mov_ps(best_d2, better, d2);
     best_id = _mm512_mask_mov_epi32(best_id, better, id);

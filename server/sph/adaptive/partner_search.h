@@ -21,15 +21,13 @@ struct PartnerScratch {
 // and partner[j] == i. Each particle writes only its own entry, so no particle can be claimed by
 // two pairs and the choice does not depend on the thread count. Where the build targets AVX-512
 // the neighbours are tested 16 at a time; the choice is the same as the scalar search's.
-void choosePartners(const ParticleSet& particles, const NeighborGrid& grid,
-                    std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
-                    PartnerScratch& scratch);
+void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
+                    std::span<std::int32_t> partner, PartnerScratch& scratch);
 
 namespace scalar {
 // The search one neighbour at a time (what choosePartners runs without AVX-512).
-void choosePartners(const ParticleSet& particles, const NeighborGrid& grid,
-                    std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
-                    PartnerScratch& scratch);
+void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
+                    std::span<std::int32_t> partner, PartnerScratch& scratch);
 }  // namespace scalar
 
 // True when choosePartners tests neighbours 16 at a time (AVX-512).

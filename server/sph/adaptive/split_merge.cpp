@@ -18,8 +18,7 @@ namespace {
 // Largest t such that centre +- t * dir both lie inside the box shrunk by `margin` (the child
 // radius), capped at `wanted`. The parent already sits inside the box shrunk by its own, larger
 // radius, so t > 0 always.
-float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin,
-                     float wanted) {
+float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin, float wanted) {
   float t = wanted;
   for (int a = 0; a < 3; ++a) {
     const float d = std::abs(dir[a]);
@@ -41,8 +40,8 @@ void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float rad
 
 Vec3 splitDirection(std::uint32_t id) { return hashedUnitVector(id); }
 
-void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, float max_distance, StragglerScratch& scratch) {
+void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
+                    float max_distance, StragglerScratch& scratch) {
   // Each thread lists the stragglers of its contiguous index range at the start of that range
   // (branch-free: whether a particle is a straggler follows no pattern a predictor could learn);
   // the ranges are then closed up in thread order, so the list is in index order whatever the
@@ -86,9 +85,8 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
   std::vector<std::uint32_t>& by_x = scratch.by_x;
   by_x.resize(count);
   for (std::uint32_t a = 0; a < count; ++a) by_x[a] = a;
-  std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return x(a) < x(b) || (x(a) == x(b) && a < b);
-  });
+  std::sort(by_x.begin(), by_x.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return x(a) < x(b) || (x(a) == x(b) && a < b); });
   std::vector<std::int32_t>& nearest = scratch.nearest;
   nearest.assign(count, -1);
   const float max_d2 = max_distance * max_distance;
@@ -115,8 +113,7 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
 }
 
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
-                                 std::span<const std::int32_t> partner,
-                                 std::vector<std::uint8_t>& keep,
+                                 std::span<const std::int32_t> partner, std::vector<std::uint8_t>& keep,
                                  std::vector<std::uint32_t>& split_list) {
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
@@ -192,8 +189,8 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
 #pragma omp parallel for schedule(static) reduction(+ : merges)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t j = partner[i];
-    if (j < 0 || static_cast<std::size_t>(j) <= i || partner[static_cast<std::size_t>(j)] !=
-                                                         static_cast<std::int32_t>(i)) {
+    if (j < 0 || static_cast<std::size_t>(j) <= i ||
+        partner[static_cast<std::size_t>(j)] != static_cast<std::int32_t>(i)) {
       continue;
     }
     const auto k = static_cast<std::size_t>(j);

@@ -15,10 +15,10 @@ namespace sph {
 
 // Scratch of pairStragglers, kept between steps so the step does not allocate.
 struct StragglerScratch {
-  std::vector<std::uint32_t> lonely;   // the stragglers' particle indices, ascending (room for all)
-  std::vector<std::int32_t> nearest;   // per straggler: position in `lonely` of its nearest, or -1
-  std::vector<std::uint32_t> by_x;     // positions in `lonely`, sorted by x
-  std::vector<std::size_t> ranges;     // per thread: where its stragglers start, how many
+  std::vector<std::uint32_t> lonely;  // the stragglers' particle indices, ascending (room for all)
+  std::vector<std::int32_t> nearest;  // per straggler: position in `lonely` of its nearest, or -1
+  std::vector<std::uint32_t> by_x;    // positions in `lonely`, sorted by x
+  std::vector<std::size_t> ranges;    // per thread: where its stragglers start, how many
 };
 
 // Stragglers: SMALL particles that want to merge but found no candidate at all within the
@@ -38,8 +38,7 @@ struct SplitMergeCounts {
 // every mutual pair into a LARGE particle at the pair's midpoint with the mean velocity. Children
 // and merged particles stay inside the box with their radius. `keep` and `split_list` are scratch.
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
-                                 std::span<const std::int32_t> partner,
-                                 std::vector<std::uint8_t>& keep,
+                                 std::span<const std::int32_t> partner, std::vector<std::uint8_t>& keep,
                                  std::vector<std::uint32_t>& split_list);
 
 // Unit vector drawn from a particle id (splitmix64), the axis a split places its children along.
