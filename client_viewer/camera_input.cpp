@@ -2,7 +2,7 @@
 
 namespace viewer {
 
-void WindowEvents::install(GLFWwindow* window) {
+WindowEvents::WindowEvents(GLFWwindow* window) {
   // GLFW has one user pointer per window; it holds this object.
   glfwSetWindowUserPointer(window, this);
   glfwSetScrollCallback(window, [](GLFWwindow* w, double /*x*/, double y) {

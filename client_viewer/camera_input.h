@@ -23,12 +23,15 @@ class CameraInput {
 };
 
 // Events that must not be missed between two polls (a quick key tap, wheel steps), collected by
-// GLFW callbacks. Install before ImGui installs its callbacks: ImGui chains to these.
+// GLFW callbacks, installed by the constructor. Make it before ImGui installs its callbacks: ImGui
+// chains to these. Must not move (the window keeps a pointer to it).
 struct WindowEvents {
+  explicit WindowEvents(GLFWwindow* window);
+  WindowEvents(const WindowEvents&) = delete;
+  WindowEvents& operator=(const WindowEvents&) = delete;
   double wheel_steps = 0.0;
   int keys_pressed[16] = {};
   int key_count = 0;
-  void install(GLFWwindow* window);
   bool takeKey(int key);  // true if `key` was pressed since the last take
 };
 
