@@ -1,11 +1,43 @@
 #include "sph/particles.h"
 
-#include <limits>
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 
 namespace sph {
+
+namespace {
+
+void requireRoom(std::size_t wanted, std::size_t capacity) {
+  if (wanted > capacity) throw std::length_error("particle capacity " + std::to_string(capacity) + " exceeded");
+}
+
+template <typename T>
+T mergedValue(MergeRule rule, const T& a, const T& b, const T& reset) {
+  switch (rule) {
+    case MergeRule::kKeep:
+    case MergeRule::kClass:  // set by setClass afterwards
+      return a;
+    case MergeRule::kReset:
+      return reset;
+    case MergeRule::kAverage:
+      if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, Vec3>) return T(0.5f * (a + b));
+      break;
+    case MergeRule::kSum:
+      if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, Vec3>) return T(a + b);
+      break;
+    case MergeRule::kMin:
+      if constexpr (std::is_arithmetic_v<T>) return std::min(a, b);
+      break;
+    case MergeRule::kMax:
+      if constexpr (std::is_arithmetic_v<T>) return std::max(a, b);
+      break;
+  }
+  throw std::logic_error("merge rule does not apply to this attribute's type");
+}
+
+}  // namespace
 
 ParticleSet::ParticleSet(std::size_t capacity) : capacity_(capacity) {
   forEachAttribute([&](auto& v) { v.reserve(capacity_); });
@@ -13,44 +45,64 @@ ParticleSet::ParticleSet(std::size_t capacity) : capacity_(capacity) {
 }
 
 std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const SizeClassProps& props) {
-  if (size() >= capacity_) {
-    throw std::length_error("particle capacity " + std::to_string(capacity_) + " exceeded");
-  }
+  requireRoom(size() + 1, capacity_);
+  forEachAttributeSpec([](auto& values, const auto& spec) { values.push_back(spec.reset_value); });
+  const std::size_t i = size() - 1;
   const std::uint32_t new_id = next_id_++;
-  id.push_back(new_id);
-  size_class.push_back(c);
-  mass.push_back(static_cast<float>(props.mass));
-  radius.push_back(static_cast<float>(props.radius));
-  support.push_back(static_cast<float>(props.support));
-  position.push_back(p);
-  velocity.push_back(v);
-  acceleration.push_back(Vec3::Zero());
-  density.push_back(0.0f);
-  pressure.push_back(0.0f);
-  normal_length.push_back(0.0f);
-  pressure_term.push_back(0.0f);
-  volume.push_back(0.0f);
-  surface_distance.push_back(std::numeric_limits<float>::infinity());
-  surface_hop.push_back(std::numeric_limits<float>::infinity());
+  id[i] = new_id;
+  mass[i] = static_cast<float>(props.mass);
+  setClass(i, c, props);
+  position[i] = p;
+  velocity[i] = v;
   return new_id;
 }
 
-std::size_t ParticleSet::appendZeroed(std::size_t n) {
+std::size_t ParticleSet::appendReset(std::size_t n) {
   const std::size_t first = size();
-  if (first + n > capacity_) {
-    throw std::length_error("particle capacity " + std::to_string(capacity_) + " exceeded");
-  }
-  forEachAttribute([&](auto& v) {
-    using Value = typename std::remove_reference_t<decltype(v)>::value_type;
-    // Eigen's default constructor leaves vectors uninitialised: say zero explicitly.
-    if constexpr (std::is_same_v<Value, Vec3>) {
-      v.resize(first + n, Vec3::Zero());
-    } else {
-      v.resize(first + n, Value{});
-    }
-  });
+  requireRoom(first + n, capacity_);
+  forEachAttributeSpec([&](auto& values, const auto& spec) { values.resize(first + n, spec.reset_value); });
   for (std::size_t k = first; k < first + n; ++k) id[k] = next_id_++;
   return first;
+}
+
+void ParticleSet::setClass(std::size_t i, SizeClass c, const SizeClassProps& props) {
+  size_class[i] = c;
+  radius[i] = static_cast<float>(props.radius);
+  support[i] = static_cast<float>(props.support);
+}
+
+void ParticleSet::splitInto(std::size_t parent, std::size_t child, const SizeClassProps& small) {
+  forEachAttributeSpec([&](auto& v, const auto& spec) {
+    using T = typename std::remove_cvref_t<decltype(spec)>::Value;
+    switch (spec.split) {
+      case SplitRule::kCopy:
+        v[child] = v[parent];
+        break;
+      case SplitRule::kHalve:
+        if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, Vec3>) {
+          v[parent] = T(0.5f * v[parent]);
+          v[child] = v[parent];
+          break;
+        }
+        throw std::logic_error(std::string("split rule kHalve does not apply to ") + spec.name);
+      case SplitRule::kReset:
+        v[parent] = spec.reset_value;
+        v[child] = spec.reset_value;
+        break;
+      case SplitRule::kFreshId:  // the child keeps the id appendReset gave it
+      case SplitRule::kClass:    // setClass below
+        break;
+    }
+  });
+  setClass(parent, SizeClass::Small, small);
+  setClass(child, SizeClass::Small, small);
+}
+
+void ParticleSet::mergeInto(std::size_t survivor, std::size_t absorbed, const SizeClassProps& large) {
+  forEachAttributeSpec([&](auto& v, const auto& spec) {
+    v[survivor] = mergedValue(spec.merge, v[survivor], v[absorbed], spec.reset_value);
+  });
+  setClass(survivor, SizeClass::Large, large);
 }
 
 void ParticleSet::clear() {

@@ -1,20 +1,20 @@
-// Particle state as a structure of arrays. Every per-particle attribute is listed once, in
-// forEachAttribute(), so that permute() and compact() move all of them and none can be forgotten.
+// Particle state as a structure of arrays. The attributes and their split and merge rules are
+// declared once, in particle_attributes.h; every operation here walks that declaration, so none
+// can be forgotten.
 #pragma once
 
-#include <Eigen/Core>
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "sph/params.h"
+#include "sph/particle_attributes.h"
 
 namespace sph {
 
-using Vec3 = Eigen::Vector3f;
-
-class ParticleSet {
+class ParticleSet : public ParticleAttributes {
  public:
   // The thesis's ceiling: 10,000 LARGE particles that may all split into 20,000 SMALL.
   static constexpr std::size_t kDefaultCapacity = 20000;
@@ -25,14 +25,25 @@ class ParticleSet {
   std::size_t capacity() const { return capacity_; }
   bool empty() const { return id.empty(); }
 
-  // Appends one particle at rest; class-derived attributes (mass, radius, support) come from `props`.
-  // Throws std::length_error past the capacity (the step never grows the arrays).
+  // Appends one particle; class-derived attributes (mass, radius, support) come from `props`, the
+  // others take their reset values. Throws std::length_error past the capacity (the step never
+  // grows the arrays).
   std::uint32_t add(const Vec3& position, const Vec3& velocity, SizeClass size_class, const SizeClassProps& props);
   void clear();
-  // Appends `n` particles with fresh ids and every other attribute zeroed, for the caller to fill
-  // (the adaptive step's split children). Returns the index of the first. Throws std::length_error
-  // past the capacity.
-  std::size_t appendZeroed(std::size_t n);
+  // Appends `n` particles with fresh ids and every other attribute at its reset value, for the
+  // caller to fill (the adaptive step's split children). Returns the index of the first. Throws
+  // std::length_error past the capacity.
+  std::size_t appendReset(std::size_t n);
+
+  // Split: `parent` and `child` (appended by appendReset) become the two children, every
+  // attribute by its SplitRule; then both take the SMALL class from `small` (setClass). The
+  // caller places them (positions start as the parent's).
+  void splitInto(std::size_t parent, std::size_t child, const SizeClassProps& small);
+  // Merge: `survivor` becomes the merged particle, every attribute by its MergeRule from the
+  // two, and takes the LARGE class from `large`. The caller removes `absorbed` afterwards.
+  void mergeInto(std::size_t survivor, std::size_t absorbed, const SizeClassProps& large);
+  // The class-derived attributes (SplitRule::kClass / MergeRule::kClass): size class, radius, support.
+  void setClass(std::size_t i, SizeClass c, const SizeClassProps& props);
 
   // Reorders every attribute so that new index k holds old index order[k].
   void permute(std::span<const std::uint32_t> order);
@@ -48,43 +59,19 @@ class ParticleSet {
   double totalMass() const;
   std::size_t countOf(SizeClass c) const;
 
-  // Attributes (structure of arrays). Public so that stages read them directly; size is the same.
-  std::vector<std::uint32_t> id;  // stable id, survives reordering
-  std::vector<SizeClass> size_class;
-  std::vector<float> mass;
-  std::vector<float> radius;   // particle radius, eq. (3.7)
-  std::vector<float> support;  // support radius h, eq. (3.8)
-  std::vector<Vec3> position;
-  std::vector<Vec3> velocity;
-  std::vector<Vec3> acceleration;
-  std::vector<float> density;        // eq. (3.11)
-  std::vector<float> pressure;       // eq. (3.12)
-  std::vector<float> normal_length;  // |n| of the colour field gradient, eq. (3.17)
-  // Per-particle factors of the pair sums, set with the density so the force loop divides less:
-  std::vector<float> pressure_term;  // p / rho^2, eq. (3.13)
-  std::vector<float> volume;         // m / rho, eqs. (3.14), (3.16)
-  // Adaptive step, surface criterion: distance to the surface or a boundary, d in (3.45), kept
-  // from step to step (infinity until reached), and this step's one-hop update of it.
-  std::vector<float> surface_distance;
-  std::vector<float> surface_hop;
-
+  // f(vector) for every attribute, in declaration order.
   template <typename F>
   void forEachAttribute(F&& f) {
-    f(id);
-    f(size_class);
-    f(mass);
-    f(radius);
-    f(support);
-    f(position);
-    f(velocity);
-    f(acceleration);
-    f(density);
-    f(pressure);
-    f(normal_length);
-    f(pressure_term);
-    f(volume);
-    f(surface_distance);
-    f(surface_hop);
+    std::apply([&](const auto&... spec) { (f(this->*spec.member), ...); }, kParticleAttributes);
+  }
+  template <typename F>
+  void forEachAttribute(F&& f) const {
+    std::apply([&](const auto&... spec) { (f(this->*spec.member), ...); }, kParticleAttributes);
+  }
+  // f(vector, spec) for every attribute, spec an AttributeSpec<T> (name, reset value, rules).
+  template <typename F>
+  void forEachAttributeSpec(F&& f) {
+    std::apply([&](const auto&... spec) { (f(this->*spec.member, spec), ...); }, kParticleAttributes);
   }
 
  private:

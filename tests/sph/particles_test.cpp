@@ -1,9 +1,14 @@
 // ParticleSet storage: permute and compact move every attribute together; the capacity is a hard
-// ceiling; mass and class counts.
+// ceiling; mass and class counts; every attribute declared once, with the split and merge rules applied.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <set>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "sph/particles.h"
@@ -127,9 +132,9 @@ TEST(ParticleSet, SwapRemoveMovesTheLastParticlesIntoTheHoles) {
   for (std::size_t k = 0; k < q.size(); ++k) expectParticleIs(q, k, chained[k]);
 }
 
-TEST(ParticleSet, AppendZeroedGivesFreshIdsAndZeroState) {
+TEST(ParticleSet, AppendResetGivesFreshIdsAndResetValues) {
   sph::ParticleSet p = makeSet(3, 8);
-  const std::size_t first = p.appendZeroed(2);
+  const std::size_t first = p.appendReset(2);
   ASSERT_EQ(first, 3u);
   ASSERT_EQ(p.size(), 5u);
   EXPECT_EQ(p.id[3], 3u);
@@ -137,5 +142,135 @@ TEST(ParticleSet, AppendZeroedGivesFreshIdsAndZeroState) {
   EXPECT_EQ(p.position[4], Vec3::Zero());
   EXPECT_EQ(p.velocity[3], Vec3::Zero());
   EXPECT_EQ(p.mass[4], 0.0f);
-  EXPECT_THROW(p.appendZeroed(4), std::length_error);
+  EXPECT_EQ(p.surface_distance[4], std::numeric_limits<float>::infinity());
+  EXPECT_THROW(p.appendReset(4), std::length_error);
+}
+
+// Each attribute is listed once in kParticleAttributes (the static_assert there catches a missing
+// one only by count; this catches one listed twice in place of another), by a unique name.
+TEST(ParticleAttributes, EveryAttributeIsDeclaredOnceWithAName) {
+  sph::ParticleSet p(4);
+  std::set<const void*> vectors;
+  std::set<std::string> names;
+  std::size_t count = 0;
+  p.forEachAttributeSpec([&](auto& v, const auto& spec) {
+    ++count;
+    vectors.insert(&v);
+    ASSERT_NE(spec.name, nullptr);
+    names.insert(spec.name);
+  });
+  EXPECT_EQ(vectors.size(), count);
+  EXPECT_EQ(names.size(), count);
+  EXPECT_EQ(count * sizeof(std::vector<float>), sizeof(sph::ParticleAttributes));
+}
+
+// The class-derived attributes are exactly the ones setClass sets.
+TEST(ParticleAttributes, ClassRulesAreTheAttributesSetClassSets) {
+  sph::ParticleSet p(4);
+  std::set<std::string> split_class, merge_class;
+  p.forEachAttributeSpec([&](auto&, const auto& spec) {
+    if (spec.split == sph::SplitRule::kClass) split_class.insert(spec.name);
+    if (spec.merge == sph::MergeRule::kClass) merge_class.insert(spec.name);
+  });
+  const std::set<std::string> expected = {"size_class", "radius", "support"};
+  EXPECT_EQ(split_class, expected);
+  EXPECT_EQ(merge_class, expected);
+}
+
+// Split and merge apply each attribute's rule: a parent whose every attribute holds a distinct
+// value, split, then its two children merged again.
+TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
+  const auto classes = sph::thesisPreset().classes();
+  const auto& small = classes[sph::classIndex(SizeClass::Small)];
+  const auto& large = classes[sph::classIndex(SizeClass::Large)];
+  sph::ParticleSet p = makeSet(1, 4);  // id 0: LARGE
+  p.surface_distance[0] = 0.5f;
+  p.surface_hop[0] = 0.25f;
+  const sph::ParticleSet before = p;
+  const std::size_t c = p.appendReset(1);
+  p.splitInto(0, c, small);
+
+  sph::ParticleSet& q = p;
+  q.forEachAttributeSpec([&](auto& v, const auto& spec) {
+    SCOPED_TRACE(spec.name);
+    const auto& parent = before.*spec.member;
+    switch (spec.split) {
+      case sph::SplitRule::kCopy:
+        EXPECT_EQ(v[0], parent[0]);
+        EXPECT_EQ(v[c], parent[0]);
+        break;
+      case sph::SplitRule::kHalve:
+        if constexpr (std::is_arithmetic_v<std::decay_t<decltype(v[0])>>) {
+          EXPECT_EQ(v[0], 0.5f * parent[0]);
+          EXPECT_EQ(v[c], 0.5f * parent[0]);
+        }
+        break;
+      case sph::SplitRule::kReset:
+        EXPECT_EQ(v[0], spec.reset_value);
+        EXPECT_EQ(v[c], spec.reset_value);
+        break;
+      case sph::SplitRule::kFreshId:
+        EXPECT_EQ(v[0], parent[0]);
+        EXPECT_NE(v[c], parent[0]);
+        break;
+      case sph::SplitRule::kClass:
+        break;  // below
+    }
+  });
+  for (std::size_t k : {std::size_t{0}, c}) {
+    EXPECT_EQ(p.size_class[k], SizeClass::Small);
+    EXPECT_EQ(p.mass[k], static_cast<float>(small.mass));  // halving the LARGE mass is exact
+    EXPECT_EQ(p.radius[k], static_cast<float>(small.radius));
+    EXPECT_EQ(p.support[k], static_cast<float>(small.support));
+  }
+
+  // Make the two children differ, then merge them.
+  p.position[c] += Vec3(0.25f, 0.0f, 0.0f);
+  p.velocity[c] = Vec3(1.0f, 2.0f, 3.0f);
+  p.density[c] = 2000.0f;
+  p.normal_length[c] = 99.0f;
+  p.surface_distance[c] = 0.125f;
+  const sph::ParticleSet children = p;
+  p.mergeInto(0, c, large);
+  p.forEachAttributeSpec([&](auto& v, const auto& spec) {
+    SCOPED_TRACE(spec.name);
+    const auto& a = (children.*spec.member)[0];
+    const auto& b = (children.*spec.member)[c];
+    using T = std::decay_t<decltype(a)>;
+    switch (spec.merge) {
+      case sph::MergeRule::kKeep:
+        EXPECT_EQ(v[0], a);
+        break;
+      case sph::MergeRule::kAverage:
+        if constexpr (!std::is_enum_v<T>) {
+          EXPECT_EQ(v[0], T(0.5f * (a + b)));
+        }
+        break;
+      case sph::MergeRule::kSum:
+        if constexpr (!std::is_enum_v<T>) {
+          EXPECT_EQ(v[0], T(a + b));
+        }
+        break;
+      case sph::MergeRule::kMin:
+        if constexpr (std::is_arithmetic_v<T>) {
+          EXPECT_EQ(v[0], std::min(a, b));
+        }
+        break;
+      case sph::MergeRule::kMax:
+        if constexpr (std::is_arithmetic_v<T>) {
+          EXPECT_EQ(v[0], std::max(a, b));
+        }
+        break;
+      case sph::MergeRule::kReset:
+        EXPECT_EQ(v[0], spec.reset_value);
+        break;
+      case sph::MergeRule::kClass:
+        break;
+    }
+  });
+  EXPECT_EQ(p.size_class[0], SizeClass::Large);
+  EXPECT_EQ(p.mass[0], static_cast<float>(large.mass));
+  EXPECT_EQ(p.radius[0], static_cast<float>(large.radius));
+  EXPECT_EQ(p.normal_length[0], 99.0f);
+  EXPECT_EQ(p.surface_distance[0], 0.125f);
 }

@@ -134,19 +134,14 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     splitting[splits] = static_cast<std::uint32_t>(i);
     splits += wantsSplit(decision[i], p.size_class[i]);
   }
-  const std::size_t first_child = p.appendZeroed(splits);
+  const std::size_t first_child = p.appendReset(splits);
   counts.splits = static_cast<int>(splits);
-
-  const float small_mass = static_cast<float>(small.mass);
   const float small_radius = static_cast<float>(small.radius);
-  const float small_support = static_cast<float>(small.support);
-  const float large_mass = static_cast<float>(large.mass);
   const float large_radius = static_cast<float>(large.radius);
-  const float large_support = static_cast<float>(large.support);
 
-  // Split, eqs. (3.37)-(3.39): m/2, r = cbrt(r^3 / 2) (the SMALL radius), velocity kept; the
-  // children sit at +- half the parent radius along the split direction, so the centre of mass
-  // stays put and the pair spacing is close to the SMALL lattice spacing.
+  // Split, eqs. (3.37)-(3.39), every attribute by its rule (particle_attributes.h); the children
+  // sit at +- half the parent radius along the split direction, so the centre of mass stays put
+  // and the pair spacing is close to the SMALL lattice spacing.
   if (splits > 0) {
     // Only the splitting particles, in small chunks: they cluster in index ranges.
 #pragma omp parallel for schedule(dynamic, 32)
@@ -160,30 +155,15 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
       Vec3 b = centre - reach * dir;
       keepOutOfObstacles(boundary, box, small_radius, a);
       keepOutOfObstacles(boundary, box, small_radius, b);
-      // The second child copies the parent, then both take the SMALL class.
-      p.size_class[c] = SizeClass::Small;
-      p.velocity[c] = p.velocity[i];
-      p.acceleration[c] = p.acceleration[i];
-      p.density[c] = p.density[i];
-      p.pressure[c] = p.pressure[i];
-      p.normal_length[c] = p.normal_length[i];
-      p.pressure_term[c] = p.pressure_term[i];
-      p.surface_distance[c] = p.surface_distance[i];
-      p.surface_hop[c] = p.surface_hop[i];
-      for (std::size_t k : {i, c}) {
-        p.size_class[k] = SizeClass::Small;
-        p.mass[k] = small_mass;
-        p.radius[k] = small_radius;
-        p.support[k] = small_support;
-        p.volume[k] = p.density[k] > 0.0f ? small_mass / p.density[k] : 0.0f;
-      }
+      p.splitInto(i, c, small);
       p.position[i] = a;
       p.position[c] = b;
     }
   }
 
-  // Merge, eqs. (3.40)-(3.43): mass summed, position and velocity averaged (equal masses, so the
-  // momentum m_i u_i + m_j u_j is kept). The lower index of each mutual pair survives.
+  // Merge, eqs. (3.40)-(3.43), every attribute by its rule: mass summed, position and velocity
+  // averaged (equal masses, so the momentum m_i u_i + m_j u_j is kept). The lower index of each
+  // mutual pair survives.
   keep.assign(p.size(), 1);
   int merges = 0;
 #pragma omp parallel for schedule(static) reduction(+ : merges)
@@ -194,22 +174,8 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
       continue;
     }
     const auto k = static_cast<std::size_t>(j);
-    Vec3 x = 0.5f * (p.position[i] + p.position[k]);
-    keepOutOfObstacles(boundary, box, large_radius, x);
-    p.position[i] = x;
-    p.velocity[i] = 0.5f * (p.velocity[i] + p.velocity[k]);
-    p.acceleration[i] = 0.5f * (p.acceleration[i] + p.acceleration[k]);
-    p.density[i] = 0.5f * (p.density[i] + p.density[k]);
-    p.pressure[i] = 0.5f * (p.pressure[i] + p.pressure[k]);
-    p.normal_length[i] = std::max(p.normal_length[i], p.normal_length[k]);
-    p.pressure_term[i] = 0.5f * (p.pressure_term[i] + p.pressure_term[k]);
-    p.surface_distance[i] = std::min(p.surface_distance[i], p.surface_distance[k]);
-    p.surface_hop[i] = std::min(p.surface_hop[i], p.surface_hop[k]);
-    p.size_class[i] = SizeClass::Large;
-    p.mass[i] = large_mass;
-    p.radius[i] = large_radius;
-    p.support[i] = large_support;
-    p.volume[i] = p.density[i] > 0.0f ? large_mass / p.density[i] : 0.0f;
+    p.mergeInto(i, k, large);
+    keepOutOfObstacles(boundary, box, large_radius, p.position[i]);
     keep[k] = 0;
     ++merges;
   }

@@ -1,0 +1,112 @@
+// The per-particle attributes, each declared once with what becomes of it when particles are
+// reordered, removed, split and merged. ParticleSet (particles.h) walks kParticleAttributes for
+// every one of those operations, so an attribute added here is moved, split and merged with the
+// others, and one left out of the table fails to compile (the static_assert below).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+#include "sph/params.h"
+
+namespace sph {
+
+using Vec3 = Eigen::Vector3f;
+
+// A LARGE particle splits into two SMALL children (eqs. (3.37)-(3.39)); each child's attribute is:
+enum class SplitRule : std::uint8_t {
+  kCopy,     // the parent's value (velocity, eq. (3.39); position, then moved apart along the split axis)
+  kHalve,    // half the parent's value: an extensive quantity (mass, eq. (3.38); volume)
+  kReset,    // the attribute's reset value
+  kFreshId,  // the first child keeps the parent's value, the second its own fresh one (the id)
+  kClass,    // the SMALL class's value (ParticleSet::setClass: size class, radius, support)
+};
+
+// Two SMALL particles merge into one LARGE (eqs. (3.40)-(3.43)); the survivor's attribute is:
+enum class MergeRule : std::uint8_t {
+  kKeep,     // the survivor's own value (the id)
+  kAverage,  // the mean of the two: equal masses, so the centre of mass and momentum are kept
+  kSum,      // the sum: an extensive quantity (mass, eq. (3.41); volume)
+  kMin,      // the smaller (a distance: the nearer of the two is the merged particle's)
+  kMax,      // the larger
+  kReset,    // the attribute's reset value
+  kClass,    // the LARGE class's value (ParticleSet::setClass)
+};
+
+struct ParticleAttributes;
+
+// Permute and swap-remove move every attribute with its particle: they need no rule.
+template <typename T>
+struct AttributeSpec {
+  using Value = T;
+  std::vector<T> ParticleAttributes::*member;
+  const char* name;
+  T reset_value;  // a new particle's value (ParticleSet::add, appendReset) and the kReset rules'
+  SplitRule split;
+  MergeRule merge;
+};
+
+// The attributes themselves (structure of arrays), public so that stages read them directly;
+// every vector has the same size. Declare a new one here AND in kParticleAttributes below.
+struct ParticleAttributes {
+  std::vector<std::uint32_t> id;  // stable id, survives reordering
+  std::vector<SizeClass> size_class;
+  std::vector<float> mass;
+  std::vector<float> radius;   // particle radius, eq. (3.7)
+  std::vector<float> support;  // support radius h, eq. (3.8)
+  std::vector<Vec3> position;
+  std::vector<Vec3> velocity;
+  std::vector<Vec3> acceleration;
+  std::vector<float> density;        // eq. (3.11)
+  std::vector<float> pressure;       // eq. (3.12)
+  std::vector<float> normal_length;  // |n| of the colour field gradient, eq. (3.17)
+  // Per-particle factors of the pair sums, set with the density so the force loop divides less:
+  std::vector<float> pressure_term;  // p / rho^2, eq. (3.13)
+  std::vector<float> volume;         // m / rho, eqs. (3.14), (3.16)
+  // Adaptive step, surface criterion: distance to the surface or a boundary, d in (3.45), kept
+  // from step to step (infinity until reached), and this step's one-hop update of it.
+  std::vector<float> surface_distance;
+  std::vector<float> surface_hop;
+};
+
+namespace detail {
+inline constexpr float kFar = std::numeric_limits<float>::infinity();
+}  // namespace detail
+
+// Attributes the next step recomputes before reading them (density to volume, acceleration,
+// normal length) still get the rule that describes them, so a frame sent between steps shows
+// sensible values.
+inline const auto kParticleAttributes = std::make_tuple(
+    AttributeSpec<std::uint32_t>{&ParticleAttributes::id, "id", 0u, SplitRule::kFreshId, MergeRule::kKeep},
+    AttributeSpec<SizeClass>{&ParticleAttributes::size_class, "size_class", SizeClass::Small, SplitRule::kClass,
+                             MergeRule::kClass},
+    AttributeSpec<float>{&ParticleAttributes::mass, "mass", 0.0f, SplitRule::kHalve, MergeRule::kSum},
+    AttributeSpec<float>{&ParticleAttributes::radius, "radius", 0.0f, SplitRule::kClass, MergeRule::kClass},
+    AttributeSpec<float>{&ParticleAttributes::support, "support", 0.0f, SplitRule::kClass, MergeRule::kClass},
+    AttributeSpec<Vec3>{&ParticleAttributes::position, "position", Vec3::Zero(), SplitRule::kCopy, MergeRule::kAverage},
+    AttributeSpec<Vec3>{&ParticleAttributes::velocity, "velocity", Vec3::Zero(), SplitRule::kCopy, MergeRule::kAverage},
+    AttributeSpec<Vec3>{&ParticleAttributes::acceleration, "acceleration", Vec3::Zero(), SplitRule::kCopy,
+                        MergeRule::kAverage},
+    AttributeSpec<float>{&ParticleAttributes::density, "density", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
+    AttributeSpec<float>{&ParticleAttributes::pressure, "pressure", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
+    // The surface criterion (3.44) asks |n| >= l of either: the merged particle is at the
+    // surface if one of the two was.
+    AttributeSpec<float>{&ParticleAttributes::normal_length, "normal_length", 0.0f, SplitRule::kCopy, MergeRule::kMax},
+    AttributeSpec<float>{&ParticleAttributes::pressure_term, "pressure_term", 0.0f, SplitRule::kCopy,
+                         MergeRule::kAverage},
+    AttributeSpec<float>{&ParticleAttributes::volume, "volume", 0.0f, SplitRule::kHalve, MergeRule::kSum},
+    AttributeSpec<float>{&ParticleAttributes::surface_distance, "surface_distance", detail::kFar, SplitRule::kCopy,
+                         MergeRule::kMin},
+    AttributeSpec<float>{&ParticleAttributes::surface_hop, "surface_hop", detail::kFar, SplitRule::kCopy,
+                         MergeRule::kMin});
+
+// Every vector is the same size, whatever its element type: a member of ParticleAttributes that is
+// missing from the table (or listed twice) changes one side of this and stops the build.
+static_assert(sizeof(ParticleAttributes) ==
+                  std::tuple_size_v<std::remove_cv_t<decltype(kParticleAttributes)>> * sizeof(std::vector<float>),
+              "every member of ParticleAttributes needs its entry (and rules) in kParticleAttributes");
+
+}  // namespace sph
