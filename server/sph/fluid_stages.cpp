@@ -6,7 +6,7 @@
 #include "sph/coincident_pairs.h"
 #include "sph/collision.h"
 #include "sph/fluid_stage_ends.h"
-#include "sph/fluid_stages_avx512.h"
+#include "sph/simd/simd_level.h"
 #include "sph/thread_share.h"
 
 namespace sph {
@@ -18,30 +18,15 @@ KernelTable makeKernelTable(const SimParams& params) {
   return table;
 }
 
-bool fluidStagesVectorized() {
-#ifdef SPH_AVX512_FLUID
-  return true;
-#else
-  return false;
-#endif
-}
-
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                             ParticleSet& particles) {
-#ifdef SPH_AVX512_FLUID
-  avx512::computeDensityPressure(params, kernels, grid, particles);
-#else
-  scalar::computeDensityPressure(params, kernels, grid, particles);
-#endif
+  dispatch(scalar::computeDensityPressure, avx512::computeDensityPressure, params, kernels, grid, particles);
 }
 
 void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                           ParticleSet& particles, bool propagate_surface_distance) {
-#ifdef SPH_AVX512_FLUID
-  avx512::computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
-#else
-  scalar::computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
-#endif
+  dispatch(scalar::computeAccelerations, avx512::computeAccelerations, params, kernels, grid, particles,
+           propagate_surface_distance);
 }
 
 namespace scalar {
@@ -127,44 +112,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
 
 }  // namespace scalar
 
-namespace {
-
-// integrateAndCollide's loop for a box without spheres or cylinders over particles [begin, end):
-// the same arithmetic and comparisons as collideBox, branch-free over restrict-qualified float
-// arrays (packed x, y, z), so that GCC vectorises it; the general loop, with a call per particle,
-// did not.
-void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::size_t end,
-                        const float* __restrict acceleration, const float* __restrict radius,
-                        float* __restrict velocity, float* __restrict position) {
-  const float lo[3] = {box.min.x(), box.min.y(), box.min.z()};
-  const float hi[3] = {box.max.x(), box.max.y(), box.max.z()};
-  const float u_lo[3] = {box.min_velocity.x(), box.min_velocity.y(), box.min_velocity.z()};
-  const float u_hi[3] = {box.max_velocity.x(), box.max_velocity.y(), box.max_velocity.z()};
-  for (std::size_t i = begin; i < end; ++i) {
-    const float r = radius[i];
-    for (int a = 0; a < 3; ++a) {
-      const std::size_t k = 3 * i + static_cast<std::size_t>(a);
-      float u = velocity[k] + dt * acceleration[k];  // eq. (3.21)
-      float x = position[k] + dt * u;                // eq. (3.22), with the updated velocity
-      // (3.29)-(3.30): onto the face the particle crossed, velocity relative to the wall's. One
-      // select per line: GCC did not vectorise the loop with the selects nested.
-      const float low = lo[a] + r;
-      const float high = hi[a] - r;
-      const bool below = x < low;
-      const bool above = !below & (x > high);  // one face at most, the lower first, as collideBox
-      const float u_below = u < u_lo[a] ? u_lo[a] : u;
-      const float u_above = u > u_hi[a] ? u_hi[a] : u;
-      x = below ? low : x;
-      x = above ? high : x;
-      u = below ? u_below : u;
-      u = above ? u_above : u;
-      velocity[k] = u;
-      position[k] = x;
-    }
-  }
-}
-
-}  // namespace
+namespace scalar {
+#include "sph/bare_box_integration.inc"
+}  // namespace scalar
 
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box, ParticleSet& p) {
   const float dt = static_cast<float>(params.time_step);
@@ -174,10 +124,11 @@ void integrateAndCollide(const SimParams& params, const Boundary& boundary, cons
     const float* radius = p.radius.data();
     float* velocity = p.velocity.data()->data();
     float* position = p.position.data()->data();
+    const auto integrate = simdLevel() == SimdLevel::kAvx512 ? avx512::integrateInBareBox : scalar::integrateInBareBox;
 #pragma omp parallel
     {
       const ThreadShare share = threadShare(n);
-      integrateInBareBox(dt, box, share.begin, share.end, acceleration, radius, velocity, position);
+      integrate(dt, box, share.begin, share.end, acceleration, radius, velocity, position);
     }
     return;
   }

@@ -35,19 +35,33 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                           ParticleSet& particles, bool propagate_surface_distance = false);
 
-// The two pair-sum stages above, one pair at a time: the code of builds without AVX-512 and the
-// reference the vector code is tested against (same sums; the vector code adds in another order
-// and takes 1/|r| from a refined estimate, so results agree to float rounding, not bit for bit).
+// The forms of the two pair-sum stages (simd_level.h): scalar, one pair at a time, the
+// reference the vector code is tested against; AVX-512, 16 pairs per instruction (the same sums,
+// added in another order, with 1/|r| from a refined estimate: results agree to float rounding,
+// not bit for bit).
 namespace scalar {
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                             ParticleSet& particles);
 void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                           ParticleSet& particles, bool propagate_surface_distance = false);
 }  // namespace scalar
+namespace avx512 {
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                            ParticleSet& particles);
+void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                          ParticleSet& particles, bool propagate_surface_distance = false);
+}  // namespace avx512
 
-// True when computeDensityPressure and computeAccelerations run 16 pairs per instruction
-// (AVX-512 builds); false when they are the scalar forms.
-bool fluidStagesVectorized();
+// integrateAndCollide's loop for a box without obstacles, particles [begin, end) of packed x, y, z
+// arrays; one form per instruction set (bare_box_integration.inc).
+namespace scalar {
+void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::size_t end, const float* acceleration,
+                        const float* radius, float* velocity, float* position);
+}  // namespace scalar
+namespace avx512 {
+void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::size_t end, const float* acceleration,
+                        const float* radius, float* velocity, float* position);
+}  // namespace avx512
 
 // Semi-implicit Euler, eqs. (3.21)-(3.22), then collisions with obstacles and the box at `box`.
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,

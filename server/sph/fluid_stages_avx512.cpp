@@ -1,19 +1,18 @@
-#include "sph/fluid_stages_avx512.h"
-
-#ifdef SPH_AVX512_FLUID
-
-// GCC 12's AVX-512 headers build _mm512_max_ps and the reductions on *_undefined_ps(), which its
-// own flow analysis reports as (maybe-)uninitialized once inlined (GCC bug 105593).
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#include <immintrin.h>
-
+// AVX-512 forms of the two pair-sum stages of fluid_stages.h: 16 neighbours per instruction, the
+// neighbour attributes gathered by index, batches running on from one particle's list into the
+// next's. Each particle still sums its own neighbours in list order (lane sums, then one fixed
+// horizontal reduction) and which lanes they take depends only on the lists' layout, so the
+// result does not depend on the thread count.
 #include <cmath>
 #include <limits>
 
-#include "sph/avx512_lanes.h"
 #include "sph/coincident_pairs.h"
 #include "sph/fluid_stage_ends.h"
+#include "sph/fluid_stages.h"
+#include "sph/simd/avx512_lanes.h"
+#include "sph/simd/avx512_target.h"
+
+SPH_AVX512_BEGIN
 
 namespace sph::avx512 {
 
@@ -184,8 +183,8 @@ struct BatchLanes {
 };
 
 // Walks the lists of block `block` 16 entries at a time across particles. Batches of one list at
-// a time leave the end of every list's last batch empty: 28 % more batches than pairs with the
-// gaze method's 29 neighbours a particle, 14 % with regular's 53. Here a list's last entries
+// a time leave the end of every list's last batch empty, which costs most where lists are short
+// (the gaze method's; docs/performance.md). Here a list's last entries
 // share their batch with the next particle's first ones. A batch never spans three lists (after a
 // list shorter than the rest of the batch, the batch ends). `Stage` provides:
 //   Owner owner(i)                           per-particle lane constants of particle i
@@ -439,11 +438,12 @@ class ForceStage {
 
 }  // namespace
 
+#include "sph/bare_box_integration.inc"
+
 // Each stage gets its SizeClassLanes (shared, read-only) and KernelBlend (its own scratch) from
 // outside: a batch reads its kernel constants through pointers into them, and while they were
 // members of the stage GCC could not tell those loads from the stage's own sums, so it kept the
-// force loop's ten sums in memory and stored them after every batch (BM_Forces, 1 thread, best of
-// 8: regular 4.30 -> 4.12 ms, gaze 1.52 -> 1.38 ms).
+// force loop's ten sums in memory and stored them after every batch (docs/performance.md).
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                             ParticleSet& p) {
   const std::size_t n = p.size();
@@ -471,4 +471,4 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
 
 }  // namespace sph::avx512
 
-#endif  // SPH_AVX512_FLUID
+SPH_AVX512_END

@@ -1,18 +1,16 @@
 #include "sph/neighbor_grid.h"
 
+#include <omp.h>
 #include <algorithm>
 #include <array>
-#include <cstddef>
-#include <utility>
-#if defined(__AVX512F__)
-#include <immintrin.h>
-#endif
-#include <omp.h>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
-#include "sph/avx512_lanes.h"
+#include "sph/grid_binning.h"
+#include "sph/simd/simd_level.h"
 #include "sph/thread_share.h"
 
 namespace sph {
@@ -47,74 +45,9 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   neighbor_index_.resize(particle_capacity * stride_ + 16);
 }
 
-void NeighborGrid::cellsOf(const float* __restrict xyz, std::size_t begin, std::size_t end,
-                           std::uint32_t* __restrict out) const {
-  // Locals, so GCC sees nothing in the loop can change them, and vectorises it.
-  const float ox = origin_.x(), oy = origin_.y(), oz = origin_.z();
-  const float inv = inv_cell_size_;
-  const int dx = dims_[0], dy = dims_[1];
-  // The container spans cells 1 .. dims - 2 (a point on its far wall may compute dims - 1, and
-  // lies on that cell's lower face). Clamped as floats before the conversion: NaN and positions
-  // below the grid land in cell 1, those above it (infinity included) in dims - 2, the outermost
-  // inner cells (the caller reports NaN separately).
-  const float top_x = static_cast<float>(dims_[0] - 2), top_y = static_cast<float>(dims_[1] - 2),
-              top_z = static_cast<float>(dims_[2] - 2);
-  const auto axis = [](float f, float top) {
-    f = f >= 1.0f ? f : 1.0f;  // NaN too
-    f = f < top + 1.0f ? f : top;
-    return static_cast<int>(f);
-  };
-  for (std::size_t i = begin; i < end; ++i) {
-    const int cx = axis((xyz[3 * i] - ox) * inv, top_x);
-    const int cy = axis((xyz[3 * i + 1] - oy) * inv, top_y);
-    const int cz = axis((xyz[3 * i + 2] - oz) * inv, top_z);
-    out[i] = static_cast<std::uint32_t>((cz * dy + cy) * dx + cx);
-  }
-}
-
-namespace {
-
-// The passes of NeighborGrid::bin over cells [begin, end). There are more cells than particles
-// (dambreak: 18,800 against 12,000-20,000), so they are written for GCC to vectorise, the scan
-// included (omp simd inscan); restrict-qualified, as thread t's counts lie at counts + t cells.
-
-// sums[c] = the particles of cell c, over the team's counts; returns their total.
-std::uint32_t sumCellCounts(const std::uint32_t* __restrict counts, std::size_t team, std::size_t cells,
-                            std::size_t begin, std::size_t end, std::uint32_t* __restrict sums) {
-  for (std::size_t c = begin; c < end; ++c) sums[c] = counts[c];
-  for (std::size_t t = 1; t < team; ++t) {
-    const std::uint32_t* __restrict row = counts + t * cells;
-    for (std::size_t c = begin; c < end; ++c) sums[c] += row[c];
-  }
-  std::uint32_t total = 0;
-  for (std::size_t c = begin; c < end; ++c) total += sums[c];
-  return total;
-}
-
-// Cell starts from `offset` (the particles of the cells before `begin`), then each thread's
-// counts replaced by its write cursor: the cell's start plus the counts of the threads before it.
-void placeCellCursors(std::uint32_t* __restrict counts, std::size_t team, std::size_t cells, std::size_t begin,
-                      std::size_t end, std::uint32_t offset, std::uint32_t* __restrict sums,
-                      std::uint32_t* __restrict starts) {
-  std::uint32_t running = offset;
-#pragma omp simd reduction(inscan, + : running)
-  for (std::size_t c = begin; c < end; ++c) {
-    starts[c] = running;
-#pragma omp scan exclusive(running)
-    running += sums[c];
-  }
-  for (std::size_t c = begin; c < end; ++c) sums[c] = starts[c];
-  for (std::size_t t = 0; t < team; ++t) {
-    std::uint32_t* __restrict row = counts + t * cells;
-    for (std::size_t c = begin; c < end; ++c) {
-      const std::uint32_t count = row[c];
-      row[c] = sums[c];
-      sums[c] += count;
-    }
-  }
-}
-
-}  // namespace
+namespace scalar {
+#include "sph/grid_binning.inc"
+}  // namespace scalar
 
 void NeighborGrid::bin(const ParticleSet& particles) {
   const std::size_t n = particles.size();
@@ -128,6 +61,9 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   if (thread_cursor_.size() < threads * cells) thread_cursor_.resize(threads * cells);
   cell_range_total_.resize(threads);
+  const GridBinningForms forms =
+      simdLevel() == SimdLevel::kAvx512 ? avx512::gridBinningForms() : scalar::gridBinningForms();
+  const GridGeometry geometry{{origin_.x(), origin_.y(), origin_.z()}, inv_cell_size_, {dims_[0], dims_[1], dims_[2]}};
 
   // A counting sort shared by the threads, in one parallel region. Done serially between two
   // parallel loops, it left the other thread idle long enough to fall asleep (omp_wait.h), and
@@ -141,19 +77,19 @@ void NeighborGrid::bin(const ParticleSet& particles) {
     const ThreadShare mine = threadShare(n);
     std::uint32_t* const cursor = thread_cursor_.data() + mine.thread * cells;
     std::fill_n(cursor, cells, 0u);
-    cellsOf(particles.position.data()->data(), mine.begin, mine.end, particle_cell_.data());
+    forms.cellsOf(geometry, particles.position.data()->data(), mine.begin, mine.end, particle_cell_.data());
     for (std::size_t i = mine.begin; i < mine.end; ++i) ++cursor[particle_cell_[i]];
 #pragma omp barrier
     // Prefix sums over the cells, each thread over its share of them: first the particles in the
     // share, then (after every thread has its total) the cell starts and the per-thread cursors.
     const ThreadShare my_cells = threadShare(cells);
     cell_range_total_[mine.thread] =
-        sumCellCounts(thread_cursor_.data(), team, cells, my_cells.begin, my_cells.end, cell_sum_.data());
+        forms.sumCellCounts(thread_cursor_.data(), team, cells, my_cells.begin, my_cells.end, cell_sum_.data());
 #pragma omp barrier
     std::uint32_t offset = 0;
     for (std::size_t t = 0; t < mine.thread; ++t) offset += cell_range_total_[t];
-    placeCellCursors(thread_cursor_.data(), team, cells, my_cells.begin, my_cells.end, offset, cell_sum_.data(),
-                     cell_start_.data());
+    forms.placeCellCursors(thread_cursor_.data(), team, cells, my_cells.begin, my_cells.end, offset, cell_sum_.data(),
+                           cell_start_.data());
 #pragma omp barrier
     // Each particle to its place in cell order, with the copies the candidate scan reads: the
     // reads go in particle order, and the arrays are re-sorted into cell order every few steps,
@@ -174,11 +110,14 @@ void NeighborGrid::bin(const ParticleSet& particles) {
 void NeighborGrid::build(const ParticleSet& particles) {
   bin(particles);
   const std::size_t n = particles.size();
+  const ScanCandidatesFn scan = simdLevel() == SimdLevel::kAvx512 ? avx512::scanCandidates : scalar::scanCandidates;
+  const SortedCandidates sorted{sorted_x_.data(), sorted_y_.data(), sorted_z_.data(), sorted_support_.data(),
+                                cell_particles_.data()};
   for (;;) {
     if (neighbor_index_.size() < n * stride_) neighbor_index_.resize(n * stride_);
     group_scratch_.resize(static_cast<std::size_t>(omp_get_max_threads()));
     for (auto& scratch : group_scratch_) {
-      if (scratch.size() < (kMaxGroup - 1) * (stride_ + 16)) scratch.resize((kMaxGroup - 1) * (stride_ + 16));
+      if (scratch.size() < (kMaxScanGroup - 1) * (stride_ + 16)) scratch.resize((kMaxScanGroup - 1) * (stride_ + 16));
     }
     std::uint32_t max_count = 0;
     // Blocks of particles taken by whichever thread is free: the cost per particle varies with its
@@ -204,31 +143,35 @@ void NeighborGrid::build(const ParticleSet& particles) {
         cursor += neighbor_count_[i];
       };
       // The lists of a group after its first wait in scratch until the ones before are placed.
-      const auto placeGroup = [&](std::size_t i, const auto& counts) {
-        place(i, counts[0]);
-        for (std::size_t g = 1; g < counts.size(); ++g) {
-          std::copy_n(scratch + (g - 1) * scratch_room,
-                      std::min<std::uint32_t>(counts[g], static_cast<std::uint32_t>(stride_ - 1)),
+      const auto placeGroup = [&](std::size_t i, const ScanTarget* targets, std::size_t count) {
+        place(i, targets[0].count);
+        for (std::size_t g = 1; g < count; ++g) {
+          std::copy_n(targets[g].out,
+                      std::min<std::uint32_t>(targets[g].count, static_cast<std::uint32_t>(stride_ - 1)),
                       neighbor_index_.data() + cursor);
-          place(i + g, counts[g]);
+          place(i + g, targets[g].count);
         }
       };
       for (std::size_t i = begin; i < end;) {
         // Particles in cell order (the arrays are re-sorted every few steps) come in runs that
-        // share one cell and so one set of candidate rows; up to kMaxGroup of them scan together.
+        // share one cell and so one set of candidate rows; up to kMaxScanGroup of them scan together.
         const std::uint32_t cell = particle_cell_[i];
         if (i == begin || cell != particle_cell_[i - 1]) rows = candidateRows(cell);
         std::size_t run = 1;
-        while (run < kMaxGroup && i + run < end && particle_cell_[i + run] == cell) ++run;
-        const auto first = static_cast<std::uint32_t>(i);
-        std::uint32_t* out = neighbor_index_.data() + cursor;
-        const std::size_t room = region_end - cursor;
-        static_assert(kMaxGroup == 2, "the dispatch below knows groups of 1 and 2");
-        if (run == 1) {
-          placeGroup(i, scanCandidateGroup<1>(rows, particles, first, out, room, scratch, scratch_room));
-        } else {
-          placeGroup(i, scanCandidateGroup<2>(rows, particles, first, out, room, scratch, scratch_room));
+        while (run < kMaxScanGroup && i + run < end && particle_cell_[i + run] == cell) ++run;
+        // The first list goes in place, the others to scratch.
+        ScanTarget targets[kMaxScanGroup];
+        for (std::size_t g = 0; g < run; ++g) {
+          const std::size_t k = i + g;
+          targets[g] = {particles.position[k],
+                        particles.support[k],
+                        static_cast<std::uint32_t>(k),
+                        g == 0 ? neighbor_index_.data() + cursor : scratch + (g - 1) * scratch_room,
+                        g == 0 ? region_end - cursor : scratch_room,
+                        0};
         }
+        scan(rows, sorted, targets, run, static_cast<std::uint32_t>(stride_ - 1));
+        placeGroup(i, targets, run);
         i += run;
       }
     }
@@ -240,7 +183,7 @@ void NeighborGrid::build(const ParticleSet& particles) {
   }
 }
 
-NeighborGrid::CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) const {
+CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) const {
   // cellsOf keeps particles off the border cells, so cell +- 1 along each axis exists: the rows are
   // offsets from `cell`, with no division to recover its coordinates (the gaze method's LARGE
   // particles, about eight to a cell, ask for new rows every few particles).
@@ -259,138 +202,6 @@ NeighborGrid::CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) cons
   }
   return out;
 }
-
-#if defined(__AVX512F__) && !defined(SPH_SCALAR_NEIGHBORS)
-namespace {
-
-// One particle whose list a scan writes: its centre and half support in all 16 lanes, where its
-// list goes, and how many candidates it has accepted so far.
-struct ScanTarget {
-  __m512 px, py, pz, half_h;
-  __m512i self;
-  std::uint32_t* out;
-  std::size_t room;  // slots from `out` that belong to the particle's block (or scratch)
-  std::uint32_t count = 0;
-
-  ScanTarget(const Vec3& p, float h, std::uint32_t index, std::uint32_t* list, std::size_t slots)
-      : px(_mm512_set1_ps(p.x())),
-        py(_mm512_set1_ps(p.y())),
-        pz(_mm512_set1_ps(p.z())),
-        half_h(_mm512_set1_ps(0.5f * h)),
-        self(_mm512_set1_epi32(static_cast<int>(index))),
-        out(list),
-        room(slots) {}
-
-  // Appends the candidates of one batch (x, y, z, half support, index on the live lanes) within
-  // reach, eq. (3.34), in candidate order. Compress in a register and store all 16 lanes while
-  // the range has room for them (a compress-store straight to memory is several times slower on
-  // current cores; the lanes past the list land where the next list will be written); near the
-  // end of the range store only the accepted lanes, so no write leaves it. Past `capacity` the
-  // writes stop but the count still grows (build() then regrows the stride).
-  void accept(__mmask16 live, __m512 x, __m512 y, __m512 z, __m512 half_hj, __m512i j, std::uint32_t capacity) {
-    const __m512 dx = _mm512_sub_ps(x, px);
-    const __m512 dy = _mm512_sub_ps(y, py);
-    const __m512 dz = _mm512_sub_ps(z, pz);
-    const __m512 reach = _mm512_add_ps(half_h, half_hj);
-    const __m512 r2 = _mm512_fmadd_ps(dz, dz, _mm512_fmadd_ps(dy, dy, _mm512_mul_ps(dx, dx)));
-    const __mmask16 accepted_lanes =
-        _mm512_mask_cmp_ps_mask(live, r2, _mm512_mul_ps(reach, reach), _CMP_LE_OQ) & _mm512_cmpneq_epi32_mask(j, self);
-    const auto accepted = static_cast<std::uint32_t>(__builtin_popcount(accepted_lanes));
-    if (count + 16 <= room) {
-      _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(accepted_lanes, j));
-    } else if (count + accepted <= capacity) {
-      alignas(64) std::uint32_t lanes[16];
-      _mm512_store_si512(lanes, _mm512_maskz_compress_epi32(accepted_lanes, j));
-      for (std::uint32_t a = 0; a < accepted; ++a) out[count + a] = lanes[a];
-    }
-    count += accepted;
-  }
-};
-
-// Walks the candidate rows 16 at a time and offers each batch to every target: particles of one
-// cell share their candidates, so a group of them loads each batch once, and their independent
-// count chains overlap.
-template <std::size_t kTargets>
-void scanRows(const std::uint32_t* row_begin, const std::uint32_t* row_end, int rows, const float* sx, const float* sy,
-              const float* sz, const float* support, const std::uint32_t* index,
-              std::array<ScanTarget, kTargets>& targets, std::uint32_t capacity) {
-  const __m512 half = _mm512_set1_ps(0.5f);
-  for (int r = 0; r < rows; ++r) {
-    for (std::uint32_t k = row_begin[r]; k < row_end[r]; k += 16) {
-      const std::uint32_t left = row_end[r] - k;
-      const __mmask16 live = lanes::liveLanes(left);
-      const __m512 x = _mm512_maskz_loadu_ps(live, sx + k);
-      const __m512 y = _mm512_maskz_loadu_ps(live, sy + k);
-      const __m512 z = _mm512_maskz_loadu_ps(live, sz + k);
-      const __m512 half_hj = _mm512_mul_ps(_mm512_maskz_loadu_ps(live, support + k), half);
-      const __m512i j = _mm512_maskz_loadu_epi32(live, index + k);
-      for (ScanTarget& t : targets) t.accept(live, x, y, z, half_hj, j, capacity);
-    }
-  }
-}
-
-}  // namespace
-
-template <std::size_t kGroup>
-std::array<std::uint32_t, kGroup> NeighborGrid::scanCandidateGroup(const CandidateRows& rows,
-                                                                   const ParticleSet& particles, std::uint32_t first,
-                                                                   std::uint32_t* out, std::size_t room,
-                                                                   std::uint32_t* scratch,
-                                                                   std::size_t scratch_room) const {
-  // Particle first writes its list in place, particle first + g (g > 0) to scratch slice g - 1.
-  const auto target = [&](std::size_t g) {
-    const std::uint32_t i = first + static_cast<std::uint32_t>(g);
-    return g == 0 ? ScanTarget(particles.position[i], particles.support[i], i, out, room)
-                  : ScanTarget(particles.position[i], particles.support[i], i, scratch + (g - 1) * scratch_room,
-                               scratch_room);
-  };
-  std::array<ScanTarget, kGroup> targets = [&]<std::size_t... g>(std::index_sequence<g...>) {
-    return std::array<ScanTarget, kGroup>{target(g)...};
-  }
-  (std::make_index_sequence<kGroup>{});
-  scanRows(rows.begin, rows.end, rows.count, sorted_x_.data(), sorted_y_.data(), sorted_z_.data(),
-           sorted_support_.data(), cell_particles_.data(), targets, static_cast<std::uint32_t>(stride_ - 1));
-  std::array<std::uint32_t, kGroup> counts;
-  for (std::size_t g = 0; g < kGroup; ++g) counts[g] = targets[g].count;
-  return counts;
-}
-#else
-std::uint32_t NeighborGrid::scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi, std::uint32_t self,
-                                           std::uint32_t* out) const {
-  const auto last_slot = static_cast<std::uint32_t>(stride_ - 1);
-  std::uint32_t count = 0;
-  for (int r = 0; r < rows.count; ++r) {
-    for (std::uint32_t k = rows.begin[r]; k < rows.end[r]; ++k) {
-      const float dx = sorted_x_[k] - pi.x();
-      const float dy = sorted_y_[k] - pi.y();
-      const float dz = sorted_z_[k] - pi.z();
-      const float reach = 0.5f * (hi + sorted_support_[k]);  // eq. (3.34)
-      const std::uint32_t j = cell_particles_[k];
-      // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so
-      // a branch here mispredicts often. Write always, advance the cursor only on acceptance.
-      const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != self);
-      out[std::min<std::uint32_t>(count, last_slot)] = j;
-      count += accept;
-    }
-  }
-  return count;
-}
-
-template <std::size_t kGroup>
-std::array<std::uint32_t, kGroup> NeighborGrid::scanCandidateGroup(const CandidateRows& rows,
-                                                                   const ParticleSet& particles, std::uint32_t first,
-                                                                   std::uint32_t* out, std::size_t /*room*/,
-                                                                   std::uint32_t* scratch,
-                                                                   std::size_t scratch_room) const {
-  std::array<std::uint32_t, kGroup> counts;
-  for (std::size_t g = 0; g < kGroup; ++g) {
-    const std::uint32_t i = first + static_cast<std::uint32_t>(g);
-    counts[g] = scanCandidates(rows, particles.position[i], particles.support[i], i,
-                               g == 0 ? out : scratch + (g - 1) * scratch_room);
-  }
-  return counts;
-}
-#endif
 
 double NeighborGrid::meanNeighbors() const {
   if (neighbor_count_.empty()) return 0.0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sph/boundary.h"
+#include "sph/neighbor_scan.h"
 #include "sph/particles.h"
 
 namespace sph {
@@ -54,43 +55,16 @@ class NeighborGrid {
   double meanNeighbors() const;
 
  private:
-  // The cells of particles [begin, end) (packed x, y, z positions) into out[begin, end).
-  void cellsOf(const float* xyz, std::size_t begin, std::size_t end, std::uint32_t* out) const;
-
   // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
-  // cells. Half-radius cells (25 rows of 5) test about 40 % fewer candidates, but each row costs its
-  // setup and a partly empty 16-lane batch: measured on the dambreak state, full cells were 20-30 %
-  // faster for 20,000 SMALL particles and about 35 % faster for the gaze method's mixed set.
+  // cells. Half-radius cells (25 rows of 5) test fewer candidates, but each row costs its setup
+  // and a partly empty 16-lane batch, and they were slower (docs/performance.md).
   static constexpr int kCellsPerSupport = 1;
 
-  // The candidates of a particle: the particles of the 27 cells around its cell, as (up to) 9
+  // The candidates of every particle in `cell`: the particles of the 27 cells around it, as 9
   // rows of 3 cells, each row a contiguous range of the sorted arrays. Particles in one cell
-  // share them: the arrays are re-sorted into cell order every few steps, so they come in runs.
-  static constexpr int kMaxRows = (2 * kCellsPerSupport + 1) * (2 * kCellsPerSupport + 1);
-  struct CandidateRows {
-    std::uint32_t begin[kMaxRows];
-    std::uint32_t end[kMaxRows];
-    int count = 0;
-  };
+  // share them: the arrays are re-sorted into cell order every few steps, so they come in runs,
+  // and up to kMaxScanGroup of a run are scanned together (neighbor_scan.h).
   CandidateRows candidateRows(std::uint32_t cell) const;
-  // Writes the lists of particles first .. first + kGroup - 1, which share `rows`: each holds the
-  // candidates within reach, eq. (3.34), the particle itself excluded, in candidate order. The
-  // first list goes to `out`, of which `room` slots belong to the particle's block (at least the
-  // stride); list g > 0 to scratch + (g - 1) scratch_room. Returns the true counts: writes past
-  // the stride are dropped but the counts still grow, so build() regrows the stride.
-  template <std::size_t kGroup>
-  std::array<std::uint32_t, kGroup> scanCandidateGroup(const CandidateRows& rows, const ParticleSet& particles,
-                                                       std::uint32_t first, std::uint32_t* out, std::size_t room,
-                                                       std::uint32_t* scratch, std::size_t scratch_room) const;
-#if !defined(__AVX512F__) || defined(SPH_SCALAR_NEIGHBORS)
-  // The scalar scan of one particle's candidates (the group scan without AVX-512).
-  std::uint32_t scanCandidates(const CandidateRows& rows, const Vec3& pi, float hi, std::uint32_t self,
-                               std::uint32_t* out) const;
-#endif
-  // Particles of one cell scanned together (the vector scan offers each batch of candidates to
-  // both). On the dambreak states, groups of 2 cut the search by about a third against one at a
-  // time; groups of 3 were slower than 2, and 4 no faster.
-  static constexpr std::size_t kMaxGroup = 2;
 
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
   float cell_size_ = 1.0f;
@@ -109,7 +83,7 @@ class NeighborGrid {
   // Position and support radius of cell_particles_[k] at k, one array per coordinate: the candidate
   // loop reads memory in order, 16 candidates per AVX-512 instruction where the CPU has it.
   std::vector<float> sorted_x_, sorted_y_, sorted_z_, sorted_support_;
-  // Per thread: the lists of a group after its first, (kMaxGroup - 1) x (stride + 16) slots.
+  // Per thread: the lists of a group after its first, (kMaxScanGroup - 1) x (stride + 16) slots.
   std::vector<std::vector<std::uint32_t>> group_scratch_;
   std::vector<std::uint32_t> neighbor_count_;
   std::vector<std::size_t> neighbor_start_;  // where each list begins in neighbor_index_

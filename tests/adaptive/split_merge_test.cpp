@@ -8,6 +8,7 @@
 #include "sph/adaptive/decide.h"
 #include "sph/adaptive/split_merge.h"
 #include "sph/fluid_stages.h"
+#include "sph/simd/simd_level.h"
 
 namespace {
 
@@ -151,7 +152,7 @@ TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
 // then on a mixed set (LARGE particles, which never pair, among the SMALL ones); every fifth
 // particle does not want to merge.
 TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
-  if (!sph::partnerSearchVectorized()) GTEST_SKIP() << "built without AVX-512: one code path only";
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
   sph::Simulation sim(poolScene(0.4, 0.4, 1200), sph::SizeClass::Small);
   sph::ParticleSet& p = sim.particles();
   for (int round = 0; round < 2; ++round) {
@@ -161,7 +162,7 @@ TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
     for (std::size_t i = 0; i < n; i += 5) decision[i] = sph::kRemain;
     std::vector<std::int32_t> vector_choice(n, 7), scalar_choice(n, 7);
     sph::PartnerScratch scratch;
-    sph::choosePartners(p, sim.grid(), decision, vector_choice, scratch);
+    sph::avx512::choosePartners(p, sim.grid(), decision, vector_choice, scratch);
     sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, scratch);
     EXPECT_EQ(vector_choice, scalar_choice) << "round " << round;
     std::size_t paired = 0;

@@ -1,17 +1,20 @@
 // The AVX-512 pair sums (fluid_stages_avx512.cpp) against the scalar reference on a cloud mixing
 // SMALL and LARGE particles: the same density, pressure, acceleration, |n| and surface-distance
-// hop up to float rounding. Skipped in builds without AVX-512, where both names run the scalar code.
+// hop up to float rounding. Skipped where the CPU (or the build, SPH_FORCE_SCALAR) has no
+// AVX-512. The public stages run the form simdLevel() names, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "sph/fluid_stages.h"
 #include "sph/neighbor_grid.h"
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/simd/simd_level.h"
 
 namespace {
 
@@ -75,7 +78,7 @@ void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& s
   sph::ParticleSet vector = cloud.particles;
 
   sph::scalar::computeDensityPressure(cloud.params, kernels, cloud.grid, scalar);
-  sph::computeDensityPressure(cloud.params, kernels, cloud.grid, vector);
+  sph::avx512::computeDensityPressure(cloud.params, kernels, cloud.grid, vector);
   double mean_rho = 0.0;
   for (float rho : scalar.density) mean_rho += rho / static_cast<double>(scalar.size());
   for (std::size_t i = 0; i < scalar.size(); ++i) {
@@ -87,7 +90,7 @@ void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& s
   // Forces from the same densities, so only the force stage's own differences show.
   vector = scalar;
   sph::scalar::computeAccelerations(cloud.params, kernels, cloud.grid, scalar, true);
-  sph::computeAccelerations(cloud.params, kernels, cloud.grid, vector, true);
+  sph::avx512::computeAccelerations(cloud.params, kernels, cloud.grid, vector, true);
   double mean_acc = 0.0, mean_normal = 0.0;
   std::size_t tension = 0, reached = 0;
   for (std::size_t i = 0; i < scalar.size(); ++i) {
@@ -114,7 +117,7 @@ void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& s
 }
 
 TEST(VectorStages, MatchTheScalarReference) {
-  if (!sph::fluidStagesVectorized()) GTEST_SKIP() << "built without AVX-512: one code path only";
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
   expectVectorMatchesScalar(sph::thesisPreset());
 }
 
@@ -122,7 +125,7 @@ TEST(VectorStages, MatchTheScalarReference) {
 // and the start of the next (and stop where a list is shorter than the rest of the batch), with
 // pairs of particles on one point among them.
 TEST(VectorStages, MatchTheScalarReferenceOnShortAndEmptyLists) {
-  if (!sph::fluidStagesVectorized()) GTEST_SKIP() << "built without AVX-512: one code path only";
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
   Cloud probe;
   makeCloud(probe, {1.2f, 0});
   std::size_t empty = 0, short_lists = 0;
@@ -138,7 +141,7 @@ TEST(VectorStages, MatchTheScalarReferenceOnShortAndEmptyLists) {
 
 // The vector stages tell the classes apart by mass where the masses differ, else by support.
 TEST(VectorStages, MatchTheScalarReferenceWithEqualClassMasses) {
-  if (!sph::fluidStagesVectorized()) GTEST_SKIP() << "built without AVX-512: one code path only";
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
   sph::SimParams params = sph::thesisPreset();
   params.mass_large = params.mass_small;
   ASSERT_NE(params.classes()[0].support, params.classes()[1].support);
@@ -146,3 +149,34 @@ TEST(VectorStages, MatchTheScalarReferenceWithEqualClassMasses) {
 }
 
 }  // namespace
+
+// The public stages are the dispatch point: they give exactly what the form simdLevel() names gives.
+TEST(VectorStages, PublicStagesRunTheChosenForm) {
+  Cloud cloud;
+  makeCloud(cloud, {});
+  const sph::KernelTable kernels = sph::makeKernelTable(cloud.params);
+  sph::ParticleSet chosen = cloud.particles;
+  sph::ParticleSet direct = cloud.particles;
+  const bool avx512 = sph::simdLevel() == sph::SimdLevel::kAvx512;
+  sph::computeDensityPressure(cloud.params, kernels, cloud.grid, chosen);
+  (avx512 ? sph::avx512::computeDensityPressure : sph::scalar::computeDensityPressure)(cloud.params, kernels,
+                                                                                       cloud.grid, direct);
+  EXPECT_EQ(chosen.density, direct.density);
+  sph::computeAccelerations(cloud.params, kernels, cloud.grid, chosen, true);
+  (avx512 ? sph::avx512::computeAccelerations : sph::scalar::computeAccelerations)(cloud.params, kernels, cloud.grid,
+                                                                                   direct, true);
+  EXPECT_EQ(chosen.acceleration, direct.acceleration);
+  EXPECT_EQ(chosen.surface_hop, direct.surface_hop);
+}
+
+TEST(SimdLevel, TheEnvironmentCanForceScalarButNotAMissingInstructionSet) {
+  EXPECT_EQ(sph::chooseSimdLevel(true, nullptr), sph::SimdLevel::kAvx512);
+  EXPECT_EQ(sph::chooseSimdLevel(true, ""), sph::SimdLevel::kAvx512);
+  EXPECT_EQ(sph::chooseSimdLevel(true, "auto"), sph::SimdLevel::kAvx512);
+  EXPECT_EQ(sph::chooseSimdLevel(true, "scalar"), sph::SimdLevel::kScalar);
+  EXPECT_EQ(sph::chooseSimdLevel(false, nullptr), sph::SimdLevel::kScalar);
+  EXPECT_EQ(sph::chooseSimdLevel(false, "avx512"), sph::SimdLevel::kScalar);
+  EXPECT_THROW(sph::chooseSimdLevel(true, "sse9"), std::invalid_argument);
+  EXPECT_TRUE(sph::simdAvailable(sph::SimdLevel::kScalar));
+  EXPECT_TRUE(sph::simdAvailable(sph::simdLevel()));
+}

@@ -19,18 +19,30 @@ struct PartnerScratch {
 // For each SMALL particle flagged MERGE, its nearest SMALL neighbour also flagged MERGE (the least
 // squared distance, ties to the lower id), or -1. Pairs are the mutual choices: partner[i] == j
 // and partner[j] == i. Each particle writes only its own entry, so no particle can be claimed by
-// two pairs and the choice does not depend on the thread count. Where the build targets AVX-512
-// the neighbours are tested 16 at a time; the choice is the same as the scalar search's.
+// two pairs and the choice does not depend on the thread count. The AVX-512 form tests the
+// neighbours 16 at a time and chooses exactly as the scalar one (simd_level.h).
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, PartnerScratch& scratch);
 
 namespace scalar {
-// The search one neighbour at a time (what choosePartners runs without AVX-512).
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, PartnerScratch& scratch);
 }  // namespace scalar
+namespace avx512 {
+void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
+                    std::span<std::int32_t> partner, PartnerScratch& scratch);
+}  // namespace avx512
 
-// True when choosePartners tests neighbours 16 at a time (AVX-512).
-bool partnerSearchVectorized();
+namespace detail {
+// The nearest merging neighbour of particle i in `list` (packed x, y, z positions), or -1.
+using NearestMergingNeighbourFn = std::int32_t (*)(const float* positions, const std::uint32_t* ids,
+                                                   std::span<const std::uint32_t> list, const std::int32_t* merging,
+                                                   std::size_t i);
+// The search's one parallel region (both forms): flag the merging SMALL particles, then each of
+// them searches its list with `nearest`.
+void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& particles, const NeighborGrid& grid,
+                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
+                        PartnerScratch& scratch);
+}  // namespace detail
 
 }  // namespace sph

@@ -1,12 +1,13 @@
 // Small AVX-512 helpers shared by the library's vector loops (the pair stages, the neighbour scan,
 // the merge-partner search): which of 16 lanes are live, and gathers from per-particle arrays.
-// Only for translation units built for AVX-512.
+// For the AVX-512 forms only (the *_avx512.cpp files); built for AVX-512 like them.
 #pragma once
 
-#if defined(__AVX512F__)
-#include <immintrin.h>
-
 #include <cstdint>
+
+#include "sph/simd/avx512_target.h"
+
+SPH_AVX512_BEGIN
 
 namespace sph::lanes {
 
@@ -23,4 +24,4 @@ inline __m512i tripleIndex(__m512i idx) { return _mm512_add_epi32(idx, _mm512_ad
 
 }  // namespace sph::lanes
 
-#endif
+SPH_AVX512_END

@@ -1,0 +1,36 @@
+#include "sph/neighbor_scan.h"
+
+#include <algorithm>
+
+namespace sph::scalar {
+
+namespace {
+
+std::uint32_t scanOne(const CandidateRows& rows, const SortedCandidates& sorted, const ScanTarget& t,
+                      std::uint32_t capacity) {
+  std::uint32_t count = 0;
+  for (int r = 0; r < rows.count; ++r) {
+    for (std::uint32_t k = rows.begin[r]; k < rows.end[r]; ++k) {
+      const float dx = sorted.x[k] - t.position.x();
+      const float dy = sorted.y[k] - t.position.y();
+      const float dz = sorted.z[k] - t.position.z();
+      const float reach = 0.5f * (t.support + sorted.support[k]);  // eq. (3.34)
+      const std::uint32_t j = sorted.index[k];
+      // Branch-free: about a third of the candidates are accepted, in no predictable pattern, so
+      // a branch here mispredicts often. Write always, advance the cursor only on acceptance.
+      const bool accept = (dx * dx + dy * dy + dz * dz <= reach * reach) & (j != t.self);
+      t.out[std::min<std::uint32_t>(count, capacity)] = j;
+      count += accept;
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
+                    std::size_t target_count, std::uint32_t capacity) {
+  for (std::size_t g = 0; g < target_count; ++g) targets[g].count = scanOne(rows, sorted, targets[g], capacity);
+}
+
+}  // namespace sph::scalar
