@@ -15,6 +15,10 @@
 
 namespace gaze_bridge_test {
 
+// How long a test waits for something that must happen: generous, so that a machine three times
+// slower, or a busy one, still gets there (a passing test never waits it out).
+inline constexpr std::chrono::seconds kWait{30};
+
 class GazeReceiver {
  public:
   GazeReceiver(zmq::context_t& context, zmq::socket_type type = zmq::socket_type::sub) : socket_(context, type) {
@@ -26,7 +30,7 @@ class GazeReceiver {
   const std::string& endpoint() const { return endpoint_; }
 
   // The next sample within timeout, parsed; nullopt on timeout.
-  std::optional<gsph::v1::GazeSample> receive(std::chrono::milliseconds timeout = std::chrono::seconds(10)) {
+  std::optional<gsph::v1::GazeSample> receive(std::chrono::milliseconds timeout = kWait) {
     zmq::pollitem_t item{socket_.handle(), 0, ZMQ_POLLIN, 0};
     zmq::poll(&item, 1, timeout);
     if (!(item.revents & ZMQ_POLLIN)) return std::nullopt;
@@ -39,7 +43,7 @@ class GazeReceiver {
 
   // Receives until `match` accepts a sample or timeout passes overall.
   std::optional<gsph::v1::GazeSample> receiveUntil(const std::function<bool(const gsph::v1::GazeSample&)>& match,
-                                                   std::chrono::milliseconds timeout = std::chrono::seconds(10)) {
+                                                   std::chrono::milliseconds timeout = kWait) {
     const auto end = std::chrono::steady_clock::now() + timeout;
     while (std::chrono::steady_clock::now() < end) {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());

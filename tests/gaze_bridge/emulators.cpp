@@ -67,12 +67,13 @@ PupilEmulator::PupilEmulator(zmq::context_t& context, int remote_port)
     remote_.bind("tcp://127.0.0.1:*");
   } else {
     // A restart on the old port: libzmq closes the previous listener asynchronously, so retry a while.
-    for (int attempt = 0;; ++attempt) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    for (;;) {
       try {
         remote_.bind("tcp://127.0.0.1:" + std::to_string(remote_port));
         break;
       } catch (const zmq::error_t&) {
-        if (attempt >= 250) throw;
+        if (std::chrono::steady_clock::now() > give_up) throw;
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
       }
     }

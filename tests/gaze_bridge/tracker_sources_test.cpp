@@ -8,6 +8,7 @@
 #include "emulators.h"
 #include "gazepoint_source.h"
 #include "pupil_source.h"
+#include "support/reserved_port.h"
 
 using namespace gaze_bridge_test;
 using namespace std::chrono_literals;
@@ -21,7 +22,7 @@ bool near(float a, double b) { return std::abs(static_cast<double>(a) - b) < 1e-
 std::optional<gsph::v1::GazeSample> publishUntil(PupilEmulator& pupil, const std::string& topic,
                                                  const std::string& payload, GazeReceiver& receiver,
                                                  const std::function<bool(const gsph::v1::GazeSample&)>& match) {
-  const auto end = std::chrono::steady_clock::now() + 10s;
+  const auto end = std::chrono::steady_clock::now() + kWait;
   while (std::chrono::steady_clock::now() < end) {
     pupil.publish(topic, payload);
     if (auto s = receiver.receiveUntil(match, 20ms)) return s;
@@ -92,7 +93,7 @@ TEST(PupilSource, IgnoresOtherSurfacesAndPrefixTopics) {
                       rawParams(receiver.endpoint()));
   const std::string wrong = packSurfaceMessage("screen2", {{0.9, 0.9, 1.0, true, 1.0}});
   const std::string right = packSurfaceMessage("screen", {{0.1, 0.9, 1.0, true, 2.0}});
-  const auto end = std::chrono::steady_clock::now() + 10s;
+  const auto end = std::chrono::steady_clock::now() + kWait;
   std::optional<gsph::v1::GazeSample> got;
   while (!got && std::chrono::steady_clock::now() < end) {
     pupil.publish("surfaces.screen2", wrong);
@@ -111,7 +112,7 @@ TEST(PupilSource, ResumesAfterCaptureRestartsOnAnotherPort) {
   GazeReceiver receiver(context);
   gaze_bridge::PupilParams params;
   params.remote_port = remote_port;
-  params.tracker_timeout_s = 0.3;
+  params.tracker_timeout_s = 1.0;
   BridgeThread bridge(context, std::make_unique<gaze_bridge::PupilSource>(context, params),
                       rawParams(receiver.endpoint()));
   ASSERT_TRUE(publishUntil(*pupil, "surfaces.screen", packSurfaceMessage("screen", {{0.3, 0.3, 1.0, true, 1.0}}),
@@ -139,7 +140,7 @@ TEST(GazepointSource, BridgeSendsCommandsAndTurnsSplitRecordsIntoPoints) {
   params.port = tracker.port();
   BridgeThread bridge(context, std::make_unique<gaze_bridge::GazepointSource>(params), rawParams(receiver.endpoint()));
 
-  const auto end = std::chrono::steady_clock::now() + 10s;
+  const auto end = std::chrono::steady_clock::now() + kWait;
   while (tracker.acked() < 3 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(5ms);
   ASSERT_EQ(tracker.acked(), 3);
   EXPECT_EQ(tracker.commandsReceived(),
@@ -154,7 +155,8 @@ TEST(GazepointSource, BridgeSendsCommandsAndTurnsSplitRecordsIntoPoints) {
   tracker.send(gazepointRecord(1.048, 0.75, 0.0625, true));
   std::vector<gsph::v1::GazeSample> got;
   while (got.size() < 3) {
-    auto s = receiver.receiveUntil([](const auto& g) { return g.valid(); });
+    // Warm-up records (tracker time 100 s and later) still in flight are not this test's.
+    auto s = receiver.receiveUntil([](const auto& g) { return g.valid() && g.tracker_time_s() < 100.0; });
     ASSERT_TRUE(s) << "got " << got.size();
     got.push_back(*s);
   }
@@ -174,9 +176,12 @@ TEST(GazepointSource, ResumesAfterTrackerDropsConnection) {
   GazeReceiver receiver(context);
   gaze_bridge::GazepointParams params;
   params.port = tracker.port();
+  // Silence is not what this tests: a stalled machine must not make the bridge reconnect (the
+  // emulator then forgets what it was about to send).
+  params.tracker_timeout_s = 30.0;
   BridgeThread bridge(context, std::make_unique<gaze_bridge::GazepointSource>(params), rawParams(receiver.endpoint()));
   const auto wait_for = [&](auto condition) {
-    const auto end = std::chrono::steady_clock::now() + 10s;
+    const auto end = std::chrono::steady_clock::now() + kWait;
     while (!condition() && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(5ms);
     return condition();
   };
@@ -194,19 +199,22 @@ TEST(GazepointSource, ResumesAfterTrackerDropsConnection) {
 
 TEST(GazepointSource, ResumesWhenTrackerStartsAfterTheBridge) {
   zmq::context_t context;
-  int port = 0;
-  {
-    GazepointEmulator probe;  // find a free port, then free it
-    port = probe.port();
-  }
+  // A port held bound but not listening: the bridge's connections are refused, as with no tracker
+  // there, and no other test can take the port before the tracker does.
+  auto reserved = std::make_unique<sph_test::ReservedPort>();
+  const int port = reserved->port();
   GazeReceiver receiver(context);
   gaze_bridge::GazepointParams params;
   params.port = port;
-  BridgeThread bridge(context, std::make_unique<gaze_bridge::GazepointSource>(params), rawParams(receiver.endpoint()));
+  params.tracker_timeout_s = 30.0;  // as above: silence is not what this tests
+  auto raw = rawParams(receiver.endpoint());
+  raw.processor.lost_repeat_s = 0.5;  // a "lost" the receiver's late subscription missed comes again soon
+  BridgeThread bridge(context, std::make_unique<gaze_bridge::GazepointSource>(params), raw);
   // Nobody listens: the bridge says "lost" and keeps trying.
   ASSERT_TRUE(receiver.receiveUntil([](const auto& s) { return s.lost(); }));
+  reserved.reset();
   GazepointEmulator tracker(port);
-  const auto end = std::chrono::steady_clock::now() + 10s;
+  const auto end = std::chrono::steady_clock::now() + kWait;
   while (tracker.acked() < 3 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(5ms);
   ASSERT_EQ(tracker.acked(), 3);
   tracker.send(gazepointRecord(3.0, 0.5, 0.5, true));

@@ -1,7 +1,9 @@
 // sph_server in-process over real loopback sockets: frames carry the library's state, a gaze sample
 // moves the refined region, and a camera pose from a client changes the projection.
 #include <gtest/gtest.h>
+
 #include <omp.h>
+#include <functional>
 
 #include "net/frame_encoder.h"
 #include "net/input_validation.h"
@@ -59,18 +61,27 @@ TEST(ServerFrames, Float32FramesMatchTheLibraryState) { expectFrameMatches(false
 
 TEST(ServerFrames, QuantizedFramesMatchTheLibraryState) { expectFrameMatches(true); }
 
+// Every frame offered gets the next number; one the pipe drops (a descheduled network thread)
+// shows as a gap, so the test allows gaps but never a repeat or a step back, and needs some two
+// frames in a row one apart.
 TEST(ServerFrames, SequenceNumbersIncreaseByOne) {
   auto server = net_test::startServer(net_test::testOptions(sph::Method::Regular));
   zmq::context_t ctx;
   FrameSubscriber sub(ctx, server->endpoints().frames);
-  auto first = sub.next();
-  ASSERT_TRUE(first);
-  auto second = sub.next();
-  ASSERT_TRUE(second);
-  // A reading subscriber well under the high-water mark sees no gaps.
-  EXPECT_EQ(second->sequence(), first->sequence() + 1);
-  EXPECT_EQ(first->camera().viewer_id(), "scene");
-  EXPECT_GT(second->send_time_us(), 0);
+  auto previous = sub.next();
+  ASSERT_TRUE(previous);
+  EXPECT_EQ(previous->camera().viewer_id(), "scene");
+  EXPECT_GT(previous->send_time_us(), 0);
+  auto adjacent = sub.waitFor([&](const gsph::v1::Frame& f) {
+    EXPECT_GT(f.sequence(), previous->sequence()) << "a repeat or a step back";
+    const bool by_one = f.sequence() == previous->sequence() + 1;
+    previous = f;
+    return by_one;
+  });
+  ASSERT_TRUE(adjacent);
+  server->stop();
+  const auto& counters = server->simCounters();
+  EXPECT_LT(previous->sequence(), counters.frames_published.load() + counters.frames_dropped.load());
 }
 
 struct GazeRun {
@@ -88,8 +99,12 @@ struct GazeRun {
   // SMALL particles near it on the screen of `camera` and hardly any near the opposite corner. (Before
   // the first sample the lost-gaze policy refines the surface everywhere; those merge back once
   // tracking, except a few stragglers that find no merge partner.)
+  // Waits for a frame refined at (x, y) (and meeting `also`, when given): the step count at which
+  // the refinement settles depends on the machine, so every condition a test checks on the frame
+  // is part of the wait.
   std::optional<gsph::v1::Frame> lookAt(double x, double y, const sph::ScreenCamera& camera,
-                                        const std::string& viewer = "scene") {
+                                        const std::string& viewer = "scene",
+                                        const std::function<bool(const gsph::v1::Frame&)>& also = {}) {
     return sub->waitFor(
         [&](const gsph::v1::Frame& f) {
           if (f.gaze().mode() != gsph::v1::GAZE_MODE_TRACKING || std::abs(f.gaze().x() - x) > 1e-6 ||
@@ -98,7 +113,8 @@ struct GazeRun {
           }
           const auto small = net_test::smallOnScreen(f, camera);
           const int near = net_test::countNear(small, camera, x, y, 0.2);
-          return near > 10 && net_test::countNear(small, camera, 1.0 - x, 1.0 - y, 0.2) * 20 < near;
+          return near > 10 && net_test::countNear(small, camera, 1.0 - x, 1.0 - y, 0.2) * 20 < near &&
+                 (!also || also(f));
         },
         [&] { gaze->send(net_test::gazeSample(x, y, ++sequence)); });
   }
@@ -138,12 +154,12 @@ TEST(ServerFrames, CameraPoseFromAClientChangesTheProjection) {
   GazeRun run(net_test::testOptions(sph::Method::Gaze));
   const sph::Scene scene = scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR);
   const sph::ScreenCamera scene_camera = sph::cameraFromSpec(scene.camera);
-  auto before = run.lookAt(0.25, 0.25, scene_camera);
-  ASSERT_TRUE(before);
   // The scene camera has the screen's top left over the pool's low-x, low-z corner.
-  const Eigen::Vector2d xz_before = net_test::smallMeanXZ(*before);
-  EXPECT_LT(xz_before.x(), 0.2);
-  EXPECT_LT(xz_before.y(), 0.2);
+  auto before = run.lookAt(0.25, 0.25, scene_camera, "scene", [](const gsph::v1::Frame& f) {
+    const Eigen::Vector2d xz = net_test::smallMeanXZ(f);
+    return xz.x() < 0.2 && xz.y() < 0.2;
+  });
+  ASSERT_TRUE(before);
 
   // The same view turned half around (up +z instead of -z): the screen's top left now lies over the
   // opposite corner of the pool.
@@ -157,14 +173,14 @@ TEST(ServerFrames, CameraPoseFromAClientChangesTheProjection) {
   auto after = run.sub->waitFor(
       [&](const gsph::v1::Frame& f) {
         return f.camera().viewer_id() == "test-viewer" && f.gaze().mode() == gsph::v1::GAZE_MODE_TRACKING &&
-               net_test::smallMeanXZ(f).x() > 0.2 && net_test::smallMeanXZ(f).y() > 0.2;
+               net_test::smallMeanXZ(f).x() > 0.2 && net_test::smallMeanXZ(f).y() > 0.2 &&
+               net_test::countNear(net_test::smallOnScreen(f, client_camera), client_camera, 0.25, 0.25, 0.2) > 10;
       },
       [&] {
         poses.send(pose);
         run.gaze->send(net_test::gazeSample(0.25, 0.25, ++run.sequence));
       });
   ASSERT_TRUE(after);
-  EXPECT_GT(net_test::countNear(net_test::smallOnScreen(*after, client_camera), client_camera, 0.25, 0.25, 0.2), 10);
   const sph::ScreenCamera echoed = net::toScreenCamera(after->camera());
   EXPECT_LT(net_test::maxAbsDiff(echoed.view, client_camera.view), 1e-5);
 }

@@ -30,8 +30,8 @@ bool waitFor(std::mutex& mutex, const std::vector<T>& items, const std::function
 }  // namespace
 
 TestServer::TestServer(gsph::v1::Frame frame, const std::string& frames_endpoint, std::uint64_t first_sequence,
-                       std::chrono::milliseconds publish_period)
-    : frame_(std::move(frame)), sequence_(first_sequence), publish_period_(publish_period) {
+                       std::chrono::milliseconds publish_period, std::uint64_t max_frames)
+    : frame_(std::move(frame)), sequence_(first_sequence), publish_period_(publish_period), frames_left_(max_frames) {
   for (zmq::socket_t* s : {&frames_, &pose_, &gaze_, &control_}) s->set(zmq::sockopt::linger, 0);
   if (frames_endpoint.empty()) {
     frames_endpoint_ = bindEphemeral(frames_);
@@ -131,7 +131,8 @@ void TestServer::run() {
       }
     }
     const auto now = std::chrono::steady_clock::now();
-    if (subscribed_ && now >= next_publish) {
+    if (subscribed_ && frames_left_ > 0 && now >= next_publish) {
+      --frames_left_;
       {
         std::lock_guard lock(mutex_);
         frame_.set_sequence(sequence_++);

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -20,8 +21,10 @@ namespace viewer_test {
 class TestServer {
  public:
   // `frames_endpoint` empty: bind tcp://127.0.0.1:*; otherwise bind exactly there (restart tests).
+  // Publishes at most `max_frames` frames in all.
   explicit TestServer(gsph::v1::Frame frame, const std::string& frames_endpoint = "", std::uint64_t first_sequence = 1,
-                      std::chrono::milliseconds publish_period = std::chrono::milliseconds(20));
+                      std::chrono::milliseconds publish_period = std::chrono::milliseconds(20),
+                      std::uint64_t max_frames = UINT64_MAX);
   ~TestServer();
 
   std::string framesEndpoint() const { return frames_endpoint_; }
@@ -55,6 +58,7 @@ class TestServer {
   gsph::v1::Frame frame_;
   std::uint64_t sequence_;
   std::chrono::milliseconds publish_period_;
+  std::uint64_t frames_left_;
   std::vector<gsph::v1::CameraPose> poses_;
   std::vector<gsph::v1::GazeSample> gaze_samples_;
   std::vector<gsph::v1::Control> controls_;

@@ -16,7 +16,7 @@ namespace {
 
 constexpr int kWidth = 320;
 constexpr int kHeight = 240;
-constexpr auto kWait = 20s;
+constexpr auto kWait = 30s;
 constexpr double kOrbitRadiansPerPixel = 0.006;  // client_viewer/orbit_camera.cpp
 
 FrameSpec oneParticle(std::uint8_t size_class) {
@@ -120,11 +120,13 @@ TEST(ViewerGaze, MouseGazeFollowsTheCursorAndGoesInvalidOutside) {
   EXPECT_EQ(sample.source_id(), "mouse");
   EXPECT_EQ(sample.protocol_version(), 1u);
   x.movePointer(wx + 240, wy + 60);
+  gsph::v1::GazeSample inside;
   EXPECT_TRUE(server.waitForGaze(
-      [](const auto& g) { return g.valid() && std::abs(g.x() - 0.75) < 0.01 && std::abs(g.y() - 0.25) < 0.01; },
-      kWait));
+      [](const auto& g) { return g.valid() && std::abs(g.x() - 0.75) < 0.01 && std::abs(g.y() - 0.25) < 0.01; }, kWait,
+      &inside));
   x.movePointer(wx + kWidth + 200, wy + 60);
-  EXPECT_TRUE(server.waitForGaze([](const auto& g) { return !g.valid(); }, kWait));
+  // Invalid after the pointer left (samples before it entered the window were invalid too).
+  EXPECT_TRUE(server.waitForGaze([&](const auto& g) { return !g.valid() && g.sequence() > inside.sequence(); }, kWait));
   viewer->terminate();
   EXPECT_TRUE(viewer->waitExit(kWait).has_value());
 }
@@ -157,18 +159,19 @@ TEST(ViewerControl, SpaceKeySendsPauseAndStatusIsPolled) {
 
 TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   const std::string dir = scratchDir();
-  // Server A: a LARGE (red) particle, carrying the camera the viewer should adopt; slow, so it
-  // cannot supply the 40 frames the snapshot waits for.
+  // Server A: a LARGE (red) particle, carrying the camera the viewer should adopt; it sends 5
+  // frames in all, so it cannot supply the 40 the snapshot waits for however fast it runs.
   FrameSpec red = oneParticle(1);
   auto frame_a = makeFrame(red, 100);
   const Mat4d view = referenceLookAt({0.3, 0.4, 2.0}, {0, 0, 0});
   const Mat4d projection = referencePerspective(45.0, static_cast<double>(kWidth) / kHeight, 0.05, 20.0);
   frame_a.mutable_camera()->mutable_view()->Assign(view.begin(), view.end());
   frame_a.mutable_camera()->mutable_projection()->Assign(projection.begin(), projection.end());
-  auto server_a = std::make_unique<TestServer>(frame_a, "", 100, 300ms);
+  auto server_a = std::make_unique<TestServer>(frame_a, "", 100, 20ms, 5);
   const std::string endpoint = server_a->framesEndpoint();
-  auto viewer = startViewer(viewerArgs(*server_a, "restart", {"--snapshot", dir + "/after.png", "--frames", "40"}),
-                            dir + "/viewer.log");
+  auto viewer = startViewer(
+      viewerArgs(*server_a, "restart", {"--snapshot", dir + "/after.png", "--frames", "40", "--timeout", "150"}),
+      dir + "/viewer.log");
   // The viewer adopted A's camera: it has drawn A's frame.
   ASSERT_TRUE(server_a->waitForPose([&](const auto& p) { return matrixNear(p.view(), view, 1e-4); }, kWait))
       << readFile(dir + "/viewer.log");
@@ -179,7 +182,7 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   const auto deadline = std::chrono::steady_clock::now() + kWait;
   while (!server_b.subscribed() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(10ms);
   ASSERT_TRUE(server_b.subscribed()) << "viewer did not reconnect";
-  const auto code = viewer->waitExit(60s);
+  const auto code = viewer->waitExit(180s);
   ASSERT_TRUE(code.has_value() && *code == 0) << readFile(dir + "/viewer.log");
   viewer::RgbaImage image;
   std::string error;

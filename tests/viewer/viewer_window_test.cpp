@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "camera_reference.h"
+#include "support/reserved_port.h"
 #include "test_frames.h"
 #include "test_publisher.h"
 #include "viewer_process.h"
@@ -90,11 +92,11 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
   FrameSpec spec = fourParticles();
   spec.with_gaze = true;  // circle of 0.1 W around the screen centre
   TestServer server(makeFrame(spec, 1));
-  auto viewer =
-      startViewer(join(join(cameraArgs(), server.endpointArgs()),
-                       {"--snapshot", dir + "/window.png", "--frames", "3", "--visible", "--viewer-id", "pixels"}),
-                  dir + "/viewer.log");
-  const auto code = viewer->waitExit(60s);
+  auto viewer = startViewer(
+      join(join(cameraArgs(), server.endpointArgs()), {"--snapshot", dir + "/window.png", "--frames", "3", "--visible",
+                                                       "--viewer-id", "pixels", "--timeout", "120"}),
+      dir + "/viewer.log");
+  const auto code = viewer->waitExit(150s);
   ASSERT_TRUE(code.has_value()) << readFile(dir + "/viewer.log");
   ASSERT_EQ(*code, 0) << readFile(dir + "/viewer.log");
   gsph::v1::CameraPose pose;
@@ -134,9 +136,10 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
     spec.quantized = quantized;
     TestServer server(makeFrame(spec, 1));
     const std::string png = dir + (quantized ? "/quantized.png" : "/float.png");
-    auto viewer = startViewer(join(join(cameraArgs(), server.endpointArgs()), {"--snapshot", png, "--frames", "2"}),
-                              dir + "/viewer.log");
-    const auto code = viewer->waitExit(60s);
+    auto viewer = startViewer(
+        join(join(cameraArgs(), server.endpointArgs()), {"--snapshot", png, "--frames", "2", "--timeout", "120"}),
+        dir + "/viewer.log");
+    const auto code = viewer->waitExit(150s);
     ASSERT_TRUE(code.has_value() && *code == 0) << readFile(dir + "/viewer.log");
     images.push_back(loadPng(png));
   }
@@ -153,12 +156,10 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
 
 TEST(ViewerWindow, WaitsForServerAndTimesOutWithAPicture) {
   const std::string dir = scratchDir();
-  // Endpoints of a server that is not there: a socket bound and closed again gives a free port.
-  std::string endpoint;
-  {
-    TestServer gone(makeFrame(fourParticles(), 1));
-    endpoint = gone.framesEndpoint();
-  }
+  // An endpoint no server is on: a TCP port held bound but not listening, so connections are
+  // refused and no other test can take the port meanwhile.
+  const sph_test::ReservedPort reserved;
+  const std::string endpoint = reserved.tcpEndpoint();
   auto viewer = startViewer({"--frames-endpoint", endpoint, "--snapshot", dir + "/waiting.png", "--timeout", "1.5",
                              "--width", "320", "--height", "240"},
                             dir + "/viewer.log");
