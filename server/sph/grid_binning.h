@@ -22,8 +22,7 @@ struct GridGeometry {
 //                     returns their total
 //   placeCellCursors  cell starts from `offset`, then each thread's counts become its cursors
 struct GridBinningForms {
-  void (*cellsOf)(const GridGeometry& grid, const float* xyz, std::size_t begin, std::size_t end,
-                  std::uint32_t* out);
+  void (*cellsOf)(const GridGeometry& grid, const float* xyz, std::size_t begin, std::size_t end, std::uint32_t* out);
   std::uint32_t (*sumCellCounts)(const std::uint32_t* counts, std::size_t team, std::size_t cells, std::size_t begin,
                                  std::size_t end, std::uint32_t* sums);
   void (*placeCellCursors)(std::uint32_t* counts, std::size_t team, std::size_t cells, std::size_t begin,

@@ -110,7 +110,7 @@ void NeighborGrid::bin(const ParticleSet& particles) {
 void NeighborGrid::build(const ParticleSet& particles) {
   bin(particles);
   const std::size_t n = particles.size();
-  const ScanCandidatesFn scan = simdLevel() == SimdLevel::kAvx512 ? avx512::scanCandidates : scalar::scanCandidates;
+  const auto build_block = simdLevel() == SimdLevel::kAvx512 ? avx512::buildBlockLists : scalar::buildBlockLists;
   const SortedCandidates sorted{sorted_x_.data(), sorted_y_.data(), sorted_z_.data(), sorted_support_.data(),
                                 cell_particles_.data()};
   for (;;) {
@@ -123,57 +123,22 @@ void NeighborGrid::build(const ParticleSet& particles) {
     // Blocks of particles taken by whichever thread is free: the cost per particle varies with its
     // class and neighbour count, and adaptive runs keep the SMALL ones (the costly ones) together
     // at the end of the arrays, so fixed halves left one thread waiting for the other.
+    const BlockLists job{particle_cell_.data(),
+                         cell_start_.data(),
+                         dims_[0],
+                         dims_[0] * dims_[1],
+                         sorted,
+                         particles.position.data(),
+                         particles.support.data(),
+                         neighbor_index_.data(),
+                         neighbor_count_.data(),
+                         neighbor_start_.data(),
+                         stride_};
     const std::size_t blocks = blockCount(n);
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : max_count)
     for (std::size_t b = 0; b < blocks; ++b) {
-      const std::size_t begin = b * kBlockSize;
-      const std::size_t end = std::min(n, begin + kBlockSize);
-      // The block packs its lists from the start of its particles' slots.
-      std::size_t cursor = begin * stride_;
-      const std::size_t region_end = end * stride_;
-      CandidateRows rows;
       std::uint32_t* scratch = group_scratch_[static_cast<std::size_t>(omp_get_thread_num())].data();
-      const std::size_t scratch_room = stride_ + 16;
-      // A list keeps at most stride - 1 entries, so the ones before i used at most
-      // (i - begin) (stride - 1) slots and list i always has stride slots left in the range.
-      const auto place = [&](std::size_t i, std::uint32_t count) {
-        max_count = std::max(max_count, count);
-        neighbor_count_[i] = std::min<std::uint32_t>(count, static_cast<std::uint32_t>(stride_ - 1));
-        neighbor_start_[i] = cursor;
-        cursor += neighbor_count_[i];
-      };
-      // The lists of a group after its first wait in scratch until the ones before are placed.
-      const auto placeGroup = [&](std::size_t i, const ScanTarget* targets, std::size_t count) {
-        place(i, targets[0].count);
-        for (std::size_t g = 1; g < count; ++g) {
-          std::copy_n(targets[g].out,
-                      std::min<std::uint32_t>(targets[g].count, static_cast<std::uint32_t>(stride_ - 1)),
-                      neighbor_index_.data() + cursor);
-          place(i + g, targets[g].count);
-        }
-      };
-      for (std::size_t i = begin; i < end;) {
-        // Particles in cell order (the arrays are re-sorted every few steps) come in runs that
-        // share one cell and so one set of candidate rows; up to kMaxScanGroup of them scan together.
-        const std::uint32_t cell = particle_cell_[i];
-        if (i == begin || cell != particle_cell_[i - 1]) rows = candidateRows(cell);
-        std::size_t run = 1;
-        while (run < kMaxScanGroup && i + run < end && particle_cell_[i + run] == cell) ++run;
-        // The first list goes in place, the others to scratch.
-        ScanTarget targets[kMaxScanGroup];
-        for (std::size_t g = 0; g < run; ++g) {
-          const std::size_t k = i + g;
-          targets[g] = {particles.position[k],
-                        particles.support[k],
-                        static_cast<std::uint32_t>(k),
-                        g == 0 ? neighbor_index_.data() + cursor : scratch + (g - 1) * scratch_room,
-                        g == 0 ? region_end - cursor : scratch_room,
-                        0};
-        }
-        scan(rows, sorted, targets, run, static_cast<std::uint32_t>(stride_ - 1));
-        placeGroup(i, targets, run);
-        i += run;
-      }
+      max_count = std::max(max_count, build_block(job, b * kBlockSize, std::min(n, (b + 1) * kBlockSize), scratch));
     }
     // The last slot is scratch for the branch-free writes, so a full list must stay below it.
     if (max_count < stride_) break;
@@ -181,26 +146,6 @@ void NeighborGrid::build(const ParticleSet& particles) {
     stride_ = static_cast<std::size_t>(max_count) + max_count / 2;
     ++stride_growths_;
   }
-}
-
-CandidateRows NeighborGrid::candidateRows(std::uint32_t cell) const {
-  // cellsOf keeps particles off the border cells, so cell +- 1 along each axis exists: the rows are
-  // offsets from `cell`, with no division to recover its coordinates (the gaze method's LARGE
-  // particles, about eight to a cell, ask for new rows every few particles).
-  static_assert(kCellsPerSupport == 1, "the rows below are those of a 3 x 3 x 3 block");
-  const std::ptrdiff_t row_step = dims_[0];
-  const std::ptrdiff_t plane_step = row_step * dims_[1];
-  CandidateRows out;
-  for (std::ptrdiff_t dz = -1; dz <= 1; ++dz) {
-    for (std::ptrdiff_t dy = -1; dy <= 1; ++dy) {
-      // Cells centre - 1 .. centre + 1 of one row are contiguous in the sorted list.
-      const auto centre = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + dz * plane_step + dy * row_step);
-      out.begin[out.count] = cell_start_[centre - 1];
-      out.end[out.count] = cell_start_[centre + 2];
-      ++out.count;
-    }
-  }
-  return out;
 }
 
 double NeighborGrid::meanNeighbors() const {

@@ -58,13 +58,10 @@ class NeighborGrid {
   // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
   // cells. Half-radius cells (25 rows of 5) test fewer candidates, but each row costs its setup
   // and a partly empty 16-lane batch, and they were slower (docs/performance.md).
+  // A particle's candidates: the particles of the 27 cells around its cell, as 9 rows of 3 cells,
+  // each row a contiguous range of the sorted arrays (neighbor_scan.h).
   static constexpr int kCellsPerSupport = 1;
-
-  // The candidates of every particle in `cell`: the particles of the 27 cells around it, as 9
-  // rows of 3 cells, each row a contiguous range of the sorted arrays. Particles in one cell
-  // share them: the arrays are re-sorted into cell order every few steps, so they come in runs,
-  // and up to kMaxScanGroup of a run are scanned together (neighbor_scan.h).
-  CandidateRows candidateRows(std::uint32_t cell) const;
+  static_assert(CandidateRows::kMaxRows == (2 * kCellsPerSupport + 1) * (2 * kCellsPerSupport + 1));
 
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
   float cell_size_ = 1.0f;

@@ -1,6 +1,7 @@
 #include "sph/neighbor_scan.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace sph::scalar {
 
@@ -26,11 +27,19 @@ std::uint32_t scanOne(const CandidateRows& rows, const SortedCandidates& sorted,
   return count;
 }
 
+// The scan of one group, inlined into the block pass (neighbor_block.inc).
+inline void scanGroup(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
+                      std::size_t target_count, std::uint32_t capacity) {
+  for (std::size_t g = 0; g < target_count; ++g) targets[g].count = scanOne(rows, sorted, targets[g], capacity);
+}
+
 }  // namespace
 
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity) {
-  for (std::size_t g = 0; g < target_count; ++g) targets[g].count = scanOne(rows, sorted, targets[g], capacity);
+  scanGroup(rows, sorted, targets, target_count, capacity);
 }
+
+#include "sph/neighbor_block.inc"
 
 }  // namespace sph::scalar

@@ -1,6 +1,6 @@
-// The inner loop of the neighbour search (neighbor_grid.h): the candidates of one cell's particles
-// tested against them, eq. (3.34), and the accepted ones written to their lists. Scalar and
-// AVX-512 forms (simd_level.h), chosen by NeighborGrid::build.
+// The list pass of the neighbour search (neighbor_grid.h): for a block of particles, the
+// candidates of each cell's particles tested against them, eq. (3.34), and the accepted ones
+// written to their lists. Scalar and AVX-512 forms (simd_level.h), chosen by NeighborGrid::build.
 #pragma once
 
 #include <cstddef>
@@ -46,8 +46,6 @@ inline constexpr std::size_t kMaxScanGroup = 2;
 // |x - x_j| <= (h + h_j) / 2, eq. (3.34); at most `capacity` entries per list are written.
 // The scalar form may write one slot past the list (at most index `capacity`), the AVX-512 form
 // up to 16 while the target's `room` allows; both set each target's count.
-using ScanCandidatesFn = void (*)(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
-                                  std::size_t target_count, std::uint32_t capacity);
 namespace scalar {
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity);
@@ -55,6 +53,32 @@ void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, S
 namespace avx512 {
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity);
+}  // namespace avx512
+
+// What the list pass of one block reads and writes (NeighborGrid's arrays).
+struct BlockLists {
+  const std::uint32_t* particle_cell;  // cell of each particle
+  const std::uint32_t* cell_start;     // cells + 1 offsets into the cell-sorted arrays
+  int row_step;                        // cells per row (x), and per plane (x y)
+  int plane_step;
+  SortedCandidates sorted;
+  const Vec3* position;
+  const float* support;
+  std::uint32_t* neighbor_index;  // particles x stride slots
+  std::uint32_t* neighbor_count;
+  std::size_t* neighbor_start;
+  std::size_t stride;  // slots per particle; a list keeps at most stride - 1 entries
+};
+
+// Writes the lists of particles [begin, end), a block whose particles own slots
+// [begin, end) x stride and pack their lists from its start; `scratch` holds the lists of a group
+// after its first, (kMaxScanGroup - 1) x (stride + 16) slots. Returns the longest true count (one
+// at or past stride - 1 means some list was cut: the caller grows the stride and redoes the pass).
+namespace scalar {
+std::uint32_t buildBlockLists(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
+}  // namespace scalar
+namespace avx512 {
+std::uint32_t buildBlockLists(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
 }  // namespace avx512
 
 }  // namespace sph

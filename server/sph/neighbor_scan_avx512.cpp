@@ -1,6 +1,8 @@
 // The AVX-512 form of the neighbour scan: 16 candidates per instruction, accepted ones compressed
 // into the list.
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <utility>
 
 #include "sph/grid_binning.h"
@@ -62,25 +64,45 @@ struct LaneTarget {
 // cell share their candidates, so a group of them loads each batch once, and their independent
 // count chains overlap.
 template <std::size_t kTargets>
-void scanRows(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
-              std::uint32_t capacity) {
+[[gnu::always_inline]] inline void scanRows(const CandidateRows& rows, const SortedCandidates& sorted,
+                                            ScanTarget* targets, std::uint32_t capacity) {
   std::array<LaneTarget, kTargets> lanes = [&]<std::size_t... g>(std::index_sequence<g...>) {
     return std::array<LaneTarget, kTargets>{LaneTarget(targets[g])...};
-  }(std::make_index_sequence<kTargets>{});
+  }
+  (std::make_index_sequence<kTargets>{});
+  // Locals: the list stores are __m512i, which may alias anything, so values read through
+  // `sorted` or `rows` would be loaded again after every store.
+  const float* const sx = sorted.x;
+  const float* const sy = sorted.y;
+  const float* const sz = sorted.z;
+  const float* const support = sorted.support;
+  const std::uint32_t* const index = sorted.index;
   const __m512 half = _mm512_set1_ps(0.5f);
   for (int r = 0; r < rows.count; ++r) {
-    for (std::uint32_t k = rows.begin[r]; k < rows.end[r]; k += 16) {
-      const std::uint32_t left = rows.end[r] - k;
+    const std::uint32_t row_end = rows.end[r];
+    for (std::uint32_t k = rows.begin[r]; k < row_end; k += 16) {
+      const std::uint32_t left = row_end - k;
       const __mmask16 live = lanes::liveLanes(left);
-      const __m512 x = _mm512_maskz_loadu_ps(live, sorted.x + k);
-      const __m512 y = _mm512_maskz_loadu_ps(live, sorted.y + k);
-      const __m512 z = _mm512_maskz_loadu_ps(live, sorted.z + k);
-      const __m512 half_hj = _mm512_mul_ps(_mm512_maskz_loadu_ps(live, sorted.support + k), half);
-      const __m512i j = _mm512_maskz_loadu_epi32(live, sorted.index + k);
+      const __m512 x = _mm512_maskz_loadu_ps(live, sx + k);
+      const __m512 y = _mm512_maskz_loadu_ps(live, sy + k);
+      const __m512 z = _mm512_maskz_loadu_ps(live, sz + k);
+      const __m512 half_hj = _mm512_mul_ps(_mm512_maskz_loadu_ps(live, support + k), half);
+      const __m512i j = _mm512_maskz_loadu_epi32(live, index + k);
       for (LaneTarget& t : lanes) t.accept(live, x, y, z, half_hj, j, capacity);
     }
   }
   for (std::size_t g = 0; g < kTargets; ++g) targets[g].count = lanes[g].count;
+}
+
+// The scan of one group, inlined into the block pass (neighbor_block.inc).
+[[gnu::always_inline]] inline void scanGroup(const CandidateRows& rows, const SortedCandidates& sorted,
+                                             ScanTarget* targets, std::size_t target_count, std::uint32_t capacity) {
+  static_assert(kMaxScanGroup == 2, "the dispatch below knows groups of 1 and 2");
+  if (target_count == 1) {
+    scanRows<1>(rows, sorted, targets, capacity);
+  } else {
+    scanRows<2>(rows, sorted, targets, capacity);
+  }
 }
 
 }  // namespace
@@ -89,13 +111,10 @@ void scanRows(const CandidateRows& rows, const SortedCandidates& sorted, ScanTar
 
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity) {
-  static_assert(kMaxScanGroup == 2, "the dispatch below knows groups of 1 and 2");
-  if (target_count == 1) {
-    scanRows<1>(rows, sorted, targets, capacity);
-  } else {
-    scanRows<2>(rows, sorted, targets, capacity);
-  }
+  scanGroup(rows, sorted, targets, target_count, capacity);
 }
+
+#include "sph/neighbor_block.inc"
 
 }  // namespace sph::avx512
 

@@ -15,9 +15,8 @@ namespace {
 // and the lanes' bests are compared at the end: the least distance, then the lower id, the same
 // choice as the scalar search makes in list order. Only the candidate lanes gather positions and
 // ids, and most batches have none or few.
-std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
-                                           std::span<const std::uint32_t> list, const std::int32_t* merging,
-                                           std::size_t i) {
+std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids, std::span<const std::uint32_t> list,
+                                     const std::int32_t* merging, std::size_t i) {
   const __m512 xi = _mm512_set1_ps(pos[3 * i]);
   const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
   const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
