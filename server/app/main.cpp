@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "app/server.h"
+#include "process/omp_wait.h"
 #include "scene/scene_loader.h"
-#include "sph/omp_wait.h"
 
 namespace {
 
@@ -86,7 +86,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  sph::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
+  process::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
   CLI::App cli{"sph_server: gaze-adaptive SPH water over ZeroMQ (frames PUB, gaze, camera pose, control)"};
   CliOptions o;
   addOptions(cli, o);

@@ -1,8 +1,8 @@
 #include "bench/bench_run.h"
 
 #include "bench/gaze_replay.h"
+#include "process/omp_wait.h"
 #include "sph/camera.h"
-#include "sph/omp_wait.h"
 
 #include <omp.h>
 #include <algorithm>
@@ -82,7 +82,7 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   result_.preset = scene.params.preset;
   result_.frames = options.frames > 0 ? options.frames : scene.frames;
   result_.threads = options.threads;
-  result_.omp_wait = sph::ompWaitDescription();
+  result_.omp_wait = process::ompWaitDescription();
   result_.mass_start = sim_->particles().totalMass();
   result_.records.reserve(result_.frames);
   start_ = takeCpuSnapshot();

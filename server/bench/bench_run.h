@@ -38,7 +38,7 @@ struct RunResult {
   std::string preset;
   int frames = 0;
   int threads = 0;
-  std::string omp_wait;             // sph::ompWaitDescription()
+  std::string omp_wait;             // process::ompWaitDescription()
   std::size_t neighbor_stride = 0;  // most entries one neighbour list may hold, at the end
   double mass_start = 0.0;
   double mass_end = 0.0;

@@ -1,6 +1,6 @@
 // Encodes the simulation's state as a gsph.v1.Frame. One Frame object is reused for every frame:
-// its byte fields keep their capacity, so after the first frame encoding allocates nothing (DESIGN.md
-// section 6: a fresh 320 KB message per frame costs 0.5-1.5 ms in page faults; reuse costs ~6 us).
+// its byte fields keep their capacity, so after the first frame encoding allocates nothing (a
+// fresh message per frame costs page faults on every frame; docs/performance.md).
 #pragma once
 
 #include <cstdint>

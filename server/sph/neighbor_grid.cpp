@@ -66,7 +66,7 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   const GridGeometry geometry{{origin_.x(), origin_.y(), origin_.z()}, inv_cell_size_, {dims_[0], dims_[1], dims_[2]}};
 
   // A counting sort shared by the threads, in one parallel region. Done serially between two
-  // parallel loops, it left the other thread idle long enough to fall asleep (omp_wait.h), and
+  // parallel loops, it left the other thread idle long enough to fall asleep (process/omp_wait.h), and
   // waking it for the loop after took longer than the sort itself. The result is the serial
   // sort's, whatever the thread count: thread t counts and places its own contiguous share of the
   // particles, at cursors that put its particles of a cell after those of threads 0 .. t - 1, so

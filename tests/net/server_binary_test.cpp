@@ -131,7 +131,7 @@ std::size_t countOf(const std::string& text, const std::string& part) {
 }
 
 // libgomp prints the wait it was loaded with when OMP_DISPLAY_ENV=VERBOSE: with no policy in the
-// environment the program re-executes itself once with the bounded spin (sph/omp_wait.h); a
+// environment the program re-executes itself once with the bounded spin (process/omp_wait.h); a
 // policy the user gives is left alone and the program runs once.
 TEST(ServerBinary, WaitsWithABoundedSpinUnlessTheEnvironmentSaysOtherwise) {
   const std::string spin_line = "GOMP_SPINCOUNT = '";

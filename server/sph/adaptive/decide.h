@@ -33,7 +33,7 @@ struct DecisionCounts {
 // smaller of the boundary distance and this step's hop (the neighbours' previous d plus the pair
 // distance, computed in the force loop). The field thus advances one hop per step, which keeps up
 // with the fluid (it moves well under a support radius per step) at the cost of one min per pair,
-// where recomputing it from scratch took 40 % of a step.
+// where recomputing it from scratch took a large share of the step (docs/performance.md).
 DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out);
 
 // Eye-tracking based, eqs. (3.47)-(3.48), with a hysteresis ring: SPLIT where the projected particle

@@ -14,8 +14,8 @@
 
 #include "bench/bench_run.h"
 #include "gaze/gaze_recording.h"
+#include "process/omp_wait.h"
 #include "scene/scene_loader.h"
-#include "sph/omp_wait.h"
 #include "sph/simulation.h"
 
 namespace {
@@ -120,7 +120,7 @@ BENCHMARK(BM_FullStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 int main(int argc, char** argv) {
-  sph::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
+  process::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Viewer benchmark: render rate and frame-arrival-to-pixels time with N particles under Xvfb
-# (Mesa llvmpipe, software GL). Usage: tests/viewer/bench_viewer.sh [build-dir] [particles] [frames]
+# (Mesa llvmpipe, software GL). Usage: benchmarks/bench_viewer.sh [build-dir] [particles] [frames]
 # Prints sph_viewer's --report line. Starts its own Xvfb when DISPLAY is unset.
 set -euo pipefail
 build=${1:-build}

@@ -1,4 +1,4 @@
-#include "sph/omp_wait.h"
+#include "process/omp_wait.h"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace sph {
+namespace process {
 
 bool ompWaitPolicyGiven() {
   return std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr;
@@ -34,4 +34,4 @@ void applyDefaultOmpWaitPolicy(char** argv) {
                kDefaultOmpSpinCount, std::strerror(errno));
 }
 
-}  // namespace sph
+}  // namespace process

@@ -1,6 +1,6 @@
 // viewer_bench_publisher: a stand-in server for benchmarks and demos. Publishes frames of N moving
 // particles (a block of water that sloshes) on a PUB socket at a fixed rate, and prints the bound
-// endpoint. Not a test: see bench_viewer.sh for the viewer benchmark that uses it.
+// endpoint. Not a test: see benchmarks/bench_viewer.sh for the viewer benchmark that uses it.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
