@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/bench_compare.h"
+#include "bench/bench_plan.h"
 #include "bench/bench_run.h"
 #include "bench/gaze_replay.h"
 
@@ -83,10 +84,8 @@ TEST(BenchRun, InterleavedRunsMatchRunsAlone) {
 
   bench::SceneRun regular(s, "regular", options);
   bench::SceneRun gaze_run(s, "gaze", options);
-  while (!regular.done() || !gaze_run.done()) {
-    for (int k = 0; k < 5 && !regular.done(); ++k) regular.stepFrame();
-    for (int k = 0; k < 5 && !gaze_run.done(); ++k) gaze_run.stepFrame();
-  }
+  bench::SceneRun* both[] = {&regular, &gaze_run};
+  bench::runInTurns(both, 5);  // sph_bench's own scheduler
   for (const auto& [alone, turns] :
        {std::pair{regular_alone, regular.result()}, std::pair{gaze_alone, gaze_run.result()}}) {
     ASSERT_EQ(turns.records.size(), 12u) << alone.method;
@@ -117,7 +116,7 @@ TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   EXPECT_NE(md.find("| **Total (ms)** | **10.000** | **4.000** |"), std::string::npos) << md;
   EXPECT_NE(md.find("| Total / regular | 1.00 | 0.40 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| Adaptive share of step | 0.0 % | 5.0 % |"), std::string::npos) << md;
-  // Timings mean little without how the threads waited for each other (sph/omp_wait.h).
+  // Timings mean little without how the threads waited for each other (process/omp_wait.h).
   EXPECT_NE(md.find("300 frames, 2 threads (OpenMP wait: GOMP_SPINCOUNT=1000)"), std::string::npos) << md;
   // Nor without what else the machine did meanwhile (bench/machine_load.h).
   EXPECT_NE(md.find("Other load while the scene ran: 0.25 cores in other processes, 0.05 stolen."), std::string::npos)
