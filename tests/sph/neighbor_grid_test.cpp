@@ -1,6 +1,6 @@
 // The neighbour lists are packed back to back, one run per thread: whatever the thread count and
 // however often the stride has to grow, each list holds exactly the pairs within (hi + hj) / 2
-// (eq. (3.34)), in the same order.
+// (eq. (3.34)), in the same order; and the relation is symmetric.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -23,6 +23,20 @@ sph::ParticleSet denseCloud() {
   std::mt19937 rng(777);
   std::uniform_real_distribution<float> pos(0.0f, 0.12f);
   std::bernoulli_distribution large(0.3);
+  while (particles.size() < particles.capacity()) {
+    const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
+    particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+  }
+  return particles;
+}
+
+// 400 particles of both classes scattered in a 0.2 m cube (lists of a few to a few dozen).
+sph::ParticleSet scatteredCloud() {
+  const auto classes = sph::thesisPreset().classes();
+  sph::ParticleSet particles(400);
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<float> pos(0.0f, 0.2f);
+  std::bernoulli_distribution large(0.5);
   while (particles.size() < particles.capacity()) {
     const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
     particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
@@ -189,6 +203,39 @@ TEST(NeighborGrid, ListsOfABlockLieBackToBack) {
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
     if ((i + 1) % sph::NeighborGrid::kBlockSize == 0) continue;  // the next block starts afresh
     ASSERT_EQ(grid.neighbors(i + 1).data(), grid.neighbors(i).data() + grid.neighborCount(i)) << "particle " << i;
+  }
+}
+
+// The relation of eq. (3.34) is symmetric, and the lists are complete.
+TEST(NeighborGrid, NeighbourRelationIsSymmetric) {
+  const sph::ParticleSet p = scatteredCloud();
+  sph::Aabb bounds;
+  bounds.max = Eigen::Vector3d::Constant(0.2);
+  const auto classes = sph::thesisPreset().classes();
+  sph::NeighborGrid grid;
+  grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), p.size());
+  grid.build(p);
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::uint32_t j : grid.neighbors(i)) {
+      ASSERT_NE(j, i);
+      const auto back = grid.neighbors(j);
+      EXPECT_NE(std::find(back.begin(), back.end(), static_cast<std::uint32_t>(i)), back.end())
+          << j << " is a neighbour of " << i << " but not the reverse";
+      ++pairs;
+    }
+  }
+  EXPECT_GT(pairs, 0u);
+  // And the lists are complete: every pair within (hi + hj) / 2 is listed.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto list = grid.neighbors(i);
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (j == i) continue;
+      const float reach = 0.5f * (p.support[i] + p.support[j]);
+      const bool close = (p.position[i] - p.position[j]).squaredNorm() <= reach * reach;
+      const bool listed = std::find(list.begin(), list.end(), static_cast<std::uint32_t>(j)) != list.end();
+      EXPECT_EQ(close, listed) << "pair " << i << ", " << j;
+    }
   }
 }
 
