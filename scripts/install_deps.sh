@@ -2,7 +2,7 @@
 # Installs the Debian packages the project builds and tests with. Run as root on a fresh machine.
 set -euo pipefail
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config clang-format
   libeigen3-dev libomp-dev
   libzmq3-dev cppzmq-dev libprotobuf-dev protobuf-compiler
   libspdlog-dev nlohmann-json3-dev libcli11-dev
