@@ -15,14 +15,14 @@
 
 namespace {
 
-// 3,000 particles of both classes in a 0.12 m cube: several times the rest density, so lists
-// outgrow the starting stride of 96 and the grid must regrow it.
-sph::ParticleSet denseCloud() {
+// `count` particles of both classes (LARGE with probability `large_share`) at random in a cube of
+// side `extent`, at rest.
+sph::ParticleSet randomCloud(std::size_t count, float extent, double large_share, unsigned seed) {
   const auto classes = sph::thesisPreset().classes();
-  sph::ParticleSet particles(3000);
-  std::mt19937 rng(777);
-  std::uniform_real_distribution<float> pos(0.0f, 0.12f);
-  std::bernoulli_distribution large(0.3);
+  sph::ParticleSet particles(count);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> pos(0.0f, extent);
+  std::bernoulli_distribution large(large_share);
   while (particles.size() < particles.capacity()) {
     const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
     particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
@@ -30,19 +30,12 @@ sph::ParticleSet denseCloud() {
   return particles;
 }
 
-// 400 particles of both classes scattered in a 0.2 m cube (lists of a few to a few dozen).
-sph::ParticleSet scatteredCloud() {
-  const auto classes = sph::thesisPreset().classes();
-  sph::ParticleSet particles(400);
-  std::mt19937 rng(12345);
-  std::uniform_real_distribution<float> pos(0.0f, 0.2f);
-  std::bernoulli_distribution large(0.5);
-  while (particles.size() < particles.capacity()) {
-    const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
-    particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
-  }
-  return particles;
-}
+// 3,000 particles in a 0.12 m cube: several times the rest density, so lists outgrow the
+// starting stride of 96 and the grid must regrow it.
+sph::ParticleSet denseCloud() { return randomCloud(3000, 0.12f, 0.3, 777); }
+
+// 400 particles scattered in a 0.2 m cube (lists of a few to a few dozen).
+sph::ParticleSet scatteredCloud() { return randomCloud(400, 0.2f, 0.5, 12345); }
 
 // A grid over the cloud's cube, cells of the largest support radius.
 sph::NeighborGrid cloudGrid(std::size_t capacity) {
