@@ -91,15 +91,17 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
   std::ofstream out = openOut(path);
   out << "frame,sim_time,n_large,n_small,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
-         "splits,merges,gaze_mode,merge_unpaired\n";
+         "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
+         "divergence_iterations\n";
   char line[512];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
-    std::snprintf(line, sizeof line, "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d\n",
+    std::snprintf(line, sizeof line,
+                  "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d\n",
                   r.frame, r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
                   r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s, r.mean_neighbors,
                   r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges, sph::gazeModeName(r.gaze_mode),
-                  r.merge_unpaired);
+                  r.merge_unpaired, r.rms_speed, r.volume, r.substeps, r.solver_iterations, r.divergence_iterations);
     out << line;
   }
 }
@@ -122,12 +124,12 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
   std::ofstream out = openOut(path);
   const std::size_t n = p.size();
   if (format == SnapshotFormat::Csv) {
-    out << "id,x,y,z,vx,vy,vz,density,size_class\n";
+    out << "id,x,y,z,vx,vy,vz,density,pressure,size_class\n";
     for (std::size_t i = 0; i < n; ++i) {
       const auto& x = p.position[i];
       const auto& u = p.velocity[i];
       out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ',' << u.z()
-          << ',' << p.density[i] << ',' << sph::sizeClassName(p.size_class[i]) << '\n';
+          << ',' << p.density[i] << ',' << p.pressure[i] << ',' << sph::sizeClassName(p.size_class[i]) << '\n';
     }
     return;
   }

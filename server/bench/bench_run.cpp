@@ -39,6 +39,8 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   r.outside_box = 0;
   double density_sum = 0.0;
   double density_max = 0.0;
+  double speed_sq_sum = 0.0;
+  double volume = 0.0;
   // A particle counts as outside when its centre has left the box (a float hair of slack).
   const float slack = 1e-4f;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -54,11 +56,19 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
     }
     density_sum += p.density[i];
     density_max = std::max(density_max, static_cast<double>(p.density[i]));
+    speed_sq_sum += u.squaredNorm();
+    volume += p.density[i] > 0.0f ? p.mass[i] / p.density[i] : 0.0;
   }
   const double n = std::max<std::size_t>(p.size(), 1);
   r.mean_density_ratio = density_sum / n / rho0;
   r.max_density_ratio = density_max / rho0;
+  r.rms_speed = std::sqrt(speed_sq_sum / n);
+  r.volume = volume;
   r.mean_neighbors = sim.grid().meanNeighbors();
+  const sph::SolverStats& solver = sim.lastSolverStats();
+  r.substeps = solver.substeps;
+  r.solver_iterations = solver.iterations;
+  r.divergence_iterations = solver.divergence_iterations;
 }
 
 SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const RunOptions& options) : options_(options) {

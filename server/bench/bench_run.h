@@ -24,6 +24,11 @@ struct FrameRecord {
   double mean_neighbors = 0.0;
   double mean_density_ratio = 0.0;  // mean rho / rho0
   double max_density_ratio = 0.0;
+  double rms_speed = 0.0;  // m/s
+  double volume = 0.0;     // sum of m / rho, m^3
+  int substeps = 1;        // solver steps in the frame (SolverStats)
+  int solver_iterations = 0;
+  int divergence_iterations = 0;
   std::size_t nan_values = 0;
   std::size_t outside_box = 0;
   int splits = 0;  // adaptive step of this frame

@@ -107,6 +107,21 @@ void readParams(const Context& ctx, const json& params, sph::SimParams& p) {
          p.surface_tension_enabled = v.get<bool>();
        }},
       {"resort_interval", [&](const json& v, const std::string& k) { p.resort_interval = ctx.positiveInt(v, k); }},
+      {"substeps", [&](const json& v, const std::string& k) { p.substeps = ctx.positiveInt(v, k); }},
+      {"pbf_iterations", [&](const json& v, const std::string& k) { p.pbf_iterations = ctx.positiveInt(v, k); }},
+      {"pbf_relaxation", [&](const json& v, const std::string& k) { p.pbf_relaxation = ctx.positive(v, k); }},
+      {"pbf_tensile_k", [&](const json& v, const std::string& k) { p.pbf_tensile_k = ctx.nonNegative(v, k); }},
+      {"pbf_tensile_dq", [&](const json& v, const std::string& k) { p.pbf_tensile_dq = ctx.positive(v, k); }},
+      {"pbf_tensile_n", [&](const json& v, const std::string& k) { p.pbf_tensile_n = ctx.positiveInt(v, k); }},
+      {"xsph_viscosity", [&](const json& v, const std::string& k) { p.xsph_viscosity = ctx.nonNegative(v, k); }},
+      {"vorticity_confinement",
+       [&](const json& v, const std::string& k) { p.vorticity_confinement = ctx.nonNegative(v, k); }},
+      {"cfl", [&](const json& v, const std::string& k) { p.cfl = ctx.positive(v, k); }},
+      {"max_substeps", [&](const json& v, const std::string& k) { p.max_substeps = ctx.positiveInt(v, k); }},
+      {"density_tolerance", [&](const json& v, const std::string& k) { p.density_tolerance = ctx.positive(v, k); }},
+      {"divergence_tolerance",
+       [&](const json& v, const std::string& k) { p.divergence_tolerance = ctx.positive(v, k); }},
+      {"max_iterations", [&](const json& v, const std::string& k) { p.max_iterations = ctx.positiveInt(v, k); }},
   };
   if (!params.is_object()) ctx.fail("params", "must be an object");
   for (const auto& [name, value] : params.items()) {
@@ -242,7 +257,9 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source) {
   }
   if (doc.contains("preset")) {
     if (!doc["preset"].is_string() || !sph::presetByName(doc["preset"].get<std::string>(), s.params)) {
-      ctx.fail("preset", "unknown preset (known: thesis)");
+      std::string known;
+      for (const auto& name : sph::presetNames()) known += (known.empty() ? "" : ", ") + name;
+      ctx.fail("preset", "unknown preset (known: " + known + ")");
     }
   }
   if (doc.contains("params")) readParams(ctx, doc["params"], s.params);

@@ -64,4 +64,46 @@ inline float viscosityLaplacian(const KernelConstants& k, float r) {
   return k.visc_lap * (k.h - r);
 }
 
+// The cubic spline (M4) kernel of the incompressible solvers (pbf, dfsph), W and its gradient from
+// one function, so the density the solvers correct and the gradient they correct it with agree:
+//   W(r, h) = sigma f(q), q = r / h, sigma = 8 / (pi h^3),
+//   f(q) = 6 (q^3 - q^2) + 1 for q <= 1/2, 2 (1 - q)^3 for 1/2 < q <= 1, 0 beyond,
+// with support h (Monaghan 1992 in the compact-support form of SPlisHSPlasH). The gradient is
+// grad W = g(r) r_vec with g = dW/dr / r, finite at r = 0 (g(0) = -12 sigma / h^2): no direction
+// is needed there, and no division by r for q <= 1/2.
+struct CubicKernel {
+  float h = 0.0f;
+  float inv_h = 0.0f;
+  float sigma = 0.0f;       // 8 / (pi h^3)
+  float grad_scale = 0.0f;  // sigma / h^2
+
+  static CubicKernel forSupport(double support) {
+    CubicKernel k;
+    k.h = static_cast<float>(support);
+    k.inv_h = static_cast<float>(1.0 / support);
+    k.sigma = static_cast<float>(8.0 / (std::numbers::pi * support * support * support));
+    k.grad_scale = static_cast<float>(8.0 / (std::numbers::pi * std::pow(support, 5.0)));
+    return k;
+  }
+};
+
+// f(q) of the cubic spline, q >= 0 (the kernel shape with support 1 and sigma 1).
+inline float cubicShape(float q) {
+  if (q > 1.0f) return 0.0f;
+  if (q <= 0.5f) return 6.0f * (q * q * q - q * q) + 1.0f;
+  const float d = 1.0f - q;
+  return 2.0f * d * d * d;
+}
+
+inline float cubicW(const CubicKernel& k, float r) { return k.sigma * cubicShape(r * k.inv_h); }
+
+// g with grad W = g r_vec (see CubicKernel).
+inline float cubicGradFactor(const CubicKernel& k, float r) {
+  const float q = r * k.inv_h;
+  if (q > 1.0f) return 0.0f;
+  if (q <= 0.5f) return k.grad_scale * 6.0f * (3.0f * q - 2.0f);
+  const float d = 1.0f - q;
+  return k.grad_scale * (-6.0f * d * d / q);
+}
+
 }  // namespace sph

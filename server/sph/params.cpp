@@ -8,6 +8,18 @@ namespace sph {
 
 const char* sizeClassName(SizeClass c) { return c == SizeClass::Small ? "SMALL" : "LARGE"; }
 
+const char* solverName(Solver s) {
+  switch (s) {
+    case Solver::kPbf:
+      return "pbf";
+    case Solver::kDfsph:
+      return "dfsph";
+    case Solver::kThesis:
+      break;
+  }
+  return "thesis";
+}
+
 namespace {
 
 SizeClassProps deriveClass(double mass, double kernel_particles, double rho0) {
@@ -55,16 +67,76 @@ void SimParams::validate() const {
   requirePositive(kernel_particles_small, "kernel_particles_small");
   requirePositive(kernel_particles_large, "kernel_particles_large");
   if (resort_interval < 1) throw std::invalid_argument("parameter 'resort_interval' must be >= 1");
+  if (substeps < 1 || substeps > 100) throw std::invalid_argument("parameter 'substeps' must be in [1, 100]");
+  if (pbf_iterations < 1 || pbf_iterations > 100) {
+    throw std::invalid_argument("parameter 'pbf_iterations' must be in [1, 100]");
+  }
+  requirePositive(pbf_relaxation, "pbf_relaxation");
+  requireFinite(pbf_tensile_k, "pbf_tensile_k");
+  if (pbf_tensile_k < 0.0) throw std::invalid_argument("parameter 'pbf_tensile_k' must be >= 0");
+  requirePositive(pbf_tensile_dq, "pbf_tensile_dq");
+  if (pbf_tensile_dq >= 1.0) throw std::invalid_argument("parameter 'pbf_tensile_dq' must be < 1");
+  if (pbf_tensile_n < 1 || pbf_tensile_n > 8)
+    throw std::invalid_argument("parameter 'pbf_tensile_n' must be in [1, 8]");
+  requireFinite(xsph_viscosity, "xsph_viscosity");
+  if (xsph_viscosity < 0.0 || xsph_viscosity > 1.0) {
+    throw std::invalid_argument("parameter 'xsph_viscosity' must be in [0, 1]");
+  }
+  requireFinite(vorticity_confinement, "vorticity_confinement");
+  if (vorticity_confinement < 0.0) throw std::invalid_argument("parameter 'vorticity_confinement' must be >= 0");
+  requirePositive(cfl, "cfl");
+  if (cfl > 1.0) throw std::invalid_argument("parameter 'cfl' must be <= 1");
+  if (max_substeps < 1 || max_substeps > 1000) {
+    throw std::invalid_argument("parameter 'max_substeps' must be in [1, 1000]");
+  }
+  requirePositive(density_tolerance, "density_tolerance");
+  requirePositive(divergence_tolerance, "divergence_tolerance");
+  if (max_iterations < 1 || max_iterations > 10000) {
+    throw std::invalid_argument("parameter 'max_iterations' must be in [1, 10000]");
+  }
 }
 
 SimParams thesisPreset() { return SimParams{}; }
 
+namespace {
+
+// What pbf and dfsph share: the thesis's water, masses and frame; the cubic spline with a support
+// of two lattice spacings for both classes (x = 4/3 pi 2^3 kernel particles: about 33 neighbours,
+// and a resting lattice sums to rho0 exactly); no surface tension (the thesis's colour-field force
+// at this resolution is an artefact, not water's); the walls in the density (boundary_volume.h).
+SimParams incompressibleBase(const char* name, Solver solver) {
+  SimParams p;
+  p.preset = name;
+  p.solver = solver;
+  p.kernel_particles_small = 4.0 / 3.0 * std::numbers::pi * 8.0;
+  p.kernel_particles_large = p.kernel_particles_small;
+  p.surface_tension_enabled = false;
+  p.viscosity = 0.0;  // XSPH smooths the velocities instead
+  return p;
+}
+
+}  // namespace
+
+SimParams pbfPreset() { return incompressibleBase("pbf", Solver::kPbf); }
+
+SimParams dfsphPreset() { return incompressibleBase("dfsph", Solver::kDfsph); }
+
+const std::vector<std::string>& presetNames() {
+  static const std::vector<std::string> names = {"thesis", "pbf", "dfsph"};
+  return names;
+}
+
 bool presetByName(const std::string& name, SimParams& out) {
   if (name == "thesis") {
     out = thesisPreset();
-    return true;
+  } else if (name == "pbf") {
+    out = pbfPreset();
+  } else if (name == "dfsph") {
+    out = dfsphPreset();
+  } else {
+    return false;
   }
-  return false;
+  return true;
 }
 
 }  // namespace sph

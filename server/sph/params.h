@@ -1,10 +1,14 @@
-// Simulation parameters. The `thesis` preset reproduces tables 3.1 and 3.2; every value can be
-// overridden from a scene file. Derived quantities (radii, support radii) follow eqs. (3.7), (3.8).
+// Simulation parameters and the presets that set them. `thesis` reproduces tables 3.1 and 3.2 (a
+// weakly compressible fluid, p = k (rho - rho0)); `pbf` (Macklin & Mueller 2013) and `dfsph`
+// (Bender & Koschier 2015, 2017) keep the water's volume, with walls that count in the density
+// (boundary_volume.h). Every value can be overridden from a scene file. Derived quantities (radii,
+// support radii) follow eqs. (3.7), (3.8) for every preset.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace sph {
 
@@ -22,8 +26,17 @@ struct SizeClassProps {
   double support = 0.0;           // h = cbrt(3 V x / (4 pi)), V = m / rho0, eq. (3.8)
 };
 
+// Which fluid solver steps the particles (sph/solvers/).
+enum class Solver : std::uint8_t {
+  kThesis,  // Mueller SPH of thesis 3.3-3.5: state equation, explicit forces, semi-implicit Euler
+  kPbf,     // position based fluids
+  kDfsph,   // divergence-free SPH
+};
+const char* solverName(Solver s);
+
 struct SimParams {
   std::string preset = "thesis";
+  Solver solver = Solver::kThesis;
   // Table 3.1.
   double rest_density = 998.29;     // rho0
   double viscosity = 3.5;           // mu
@@ -42,6 +55,22 @@ struct SimParams {
   // Steps between reorderings of the particle arrays into grid-cell order (cache locality).
   int resort_interval = 8;
 
+  // The incompressible solvers. time_step stays the frame (a step of the simulation: what the
+  // server publishes and the adaptive step follows); they take solver steps inside it.
+  int substeps = 2;              // pbf: solver steps per frame
+  int pbf_iterations = 3;        // pbf: Jacobi iterations of the density constraint per solver step
+  double pbf_relaxation = 0.01;  // pbf: constraint force mixing, relative to a full neighbourhood's (MM13 eq. 11)
+  double pbf_tensile_k = 0.1;    // pbf: artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13)
+  double pbf_tensile_dq = 0.2;
+  int pbf_tensile_n = 4;
+  double xsph_viscosity = 0.01;         // c of XSPH velocity smoothing (MM13 eq. 17), both solvers
+  double vorticity_confinement = 1e-5;  // pbf: epsilon of vorticity confinement (MM13 eq. 16), per unit mass
+  double cfl = 0.4;                     // dfsph: solver step <= cfl * particle diameter / max speed
+  int max_substeps = 40;                // dfsph: at most this many solver steps per frame
+  double density_tolerance = 5e-4;      // dfsph: mean |rho / rho0 - 1| the constant-density solver stops at
+  double divergence_tolerance = 1e-3;   // dfsph: mean |d rho / dt| / rho0 * dt the divergence solver stops at
+  int max_iterations = 100;             // dfsph: per solver, per step
+
   std::array<SizeClassProps, kSizeClassCount> classes() const;
   double surfaceThreshold() const;  // l, eq. (3.36)
   // Throws std::invalid_argument naming the offending key when a value is not finite or out of range.
@@ -49,7 +78,10 @@ struct SimParams {
 };
 
 SimParams thesisPreset();
+SimParams pbfPreset();
+SimParams dfsphPreset();
 // Presets known by name; returns false when `name` is unknown.
 bool presetByName(const std::string& name, SimParams& out);
+const std::vector<std::string>& presetNames();
 
 }  // namespace sph

@@ -70,6 +70,13 @@ struct ParticleAttributes {
   // from step to step (infinity until reached), and this step's one-hop update of it.
   std::vector<float> surface_distance;
   std::vector<float> surface_hop;
+  // dfsph: k = p / rho^2 of the constant-density and of the divergence solver in the last step,
+  // the next step's warm start (Bender & Koschier 2017, 4.3).
+  std::vector<float> kappa;
+  std::vector<float> kappa_divergence;
+  // pbf: the density constraint's multiplier lambda of the last step (<= 0; pbf_passes.h), the
+  // next step's warm start.
+  std::vector<float> pbf_lambda;
 };
 
 namespace detail {
@@ -101,7 +108,14 @@ inline const auto kParticleAttributes = std::make_tuple(
     AttributeSpec<float>{&ParticleAttributes::surface_distance, "surface_distance", detail::kFar, SplitRule::kCopy,
                          MergeRule::kMin},
     AttributeSpec<float>{&ParticleAttributes::surface_hop, "surface_hop", detail::kFar, SplitRule::kCopy,
-                         MergeRule::kMin});
+                         MergeRule::kMin},
+    // p / rho^2 is intensive: the children and the merged particle keep the field's value there,
+    // so the next step's warm start fits the water around them.
+    AttributeSpec<float>{&ParticleAttributes::kappa, "kappa", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
+    AttributeSpec<float>{&ParticleAttributes::kappa_divergence, "kappa_divergence", 0.0f, SplitRule::kCopy,
+                         MergeRule::kAverage},
+    // lambda = -p m dt^2 / rho0 grows with the mass: halved for the children, summed when merged.
+    AttributeSpec<float>{&ParticleAttributes::pbf_lambda, "pbf_lambda", 0.0f, SplitRule::kHalve, MergeRule::kSum});
 
 // Every vector is the same size, whatever its element type: a member of ParticleAttributes that is
 // missing from the table (or listed twice) changes one side of this and stops the build.

@@ -16,9 +16,12 @@ void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out) {
   const SizeClassProps props = scene.params.classes()[classIndex(start_class)];
   const int count = initialParticleCount(scene, start_class);
   const double spacing = std::cbrt(props.mass / scene.params.rest_density);
-  // First lattice point half a spacing in, or a particle radius where that is larger, so no
-  // particle starts in contact with the region's walls.
-  const double inset = std::max(0.5 * spacing, props.radius);
+  // First lattice point half a spacing in: the lattice then tiles the region with each particle's
+  // volume (the incompressible presets' walls count in the density, boundary_volume.h). The
+  // thesis's collision keeps a particle a radius off a wall (3.29): there the first point is a
+  // radius in, so no particle starts in contact with the region's walls.
+  const bool thesis = scene.params.solver == Solver::kThesis;
+  const double inset = thesis ? std::max(0.5 * spacing, props.radius) : 0.5 * spacing;
   int cells[3];
   for (int a = 0; a < 3; ++a) {
     const double room = scene.water.max[a] - scene.water.min[a] - 2.0 * inset;
@@ -46,10 +49,11 @@ void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out) {
     }
   }
   const BoxState box = scene.boundary.stateAt(0.0);
+  const auto margin = static_cast<float>(inset);
   for (std::size_t i = 0; i < out.size(); ++i) {
     const Vec3& p = out.position[i];
     for (int a = 0; a < 3; ++a) {
-      if (p[a] - props.radius < box.min[a] - 1e-6f || p[a] + props.radius > box.max[a] + 1e-6f) {
+      if (p[a] - margin < box.min[a] - 1e-6f || p[a] + margin > box.max[a] + 1e-6f) {
         throw std::invalid_argument(scene.source + ": key 'water' places particles outside 'box'");
       }
     }

@@ -16,42 +16,46 @@ double msSince(Clock::time_point start) {
 }  // namespace
 
 Simulation::Simulation(const Scene& scene, SizeClass start_class, std::size_t capacity)
-    : scene_(scene), kernels_(makeKernelTable(scene.params)), particles_(capacity) {
+    : scene_(scene), kernels_(makeKernelTable(scene.params)), particles_(capacity), start_class_(start_class) {
   scene_.params.validate();
   fillWater(scene_, start_class, particles_);
+  configureGrid(false);
+  solver_ = makeFluidSolver(scene_);
+  solver_->settle({scene_, particles_, grid_, 0.0, scene_.params.time_step, false, timings_, solver_stats_});
+  timings_ = PhaseTimings{};
+}
+
+void Simulation::configureGrid(bool both_classes) {
   const auto classes = scene_.params.classes();
-  const double max_support = std::max(classes[0].support, classes[1].support);
-  grid_.configure(scene_.boundary.enclosingBox(), static_cast<float>(max_support), capacity);
+  const double support =
+      both_classes ? std::max(classes[0].support, classes[1].support) : classes[classIndex(start_class_)].support;
+  grid_.configure(scene_.boundary.enclosingBox(), static_cast<float>(support), particles_.capacity());
+}
+
+void Simulation::setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) {
+  adaptive_ = std::move(step);
+  configureGrid(adaptive_ != nullptr);
 }
 
 void Simulation::step() {
   const auto step_start = Clock::now();
+  timings_ = PhaseTimings{};
 
-  auto t = Clock::now();
   if (steps_ % scene_.params.resort_interval == 0) {
     // Reorder the arrays into grid-cell order so that neighbours sit close in memory.
+    const auto t = Clock::now();
     grid_.bin(particles_);
     particles_.permute(grid_.cellOrder());
+    timings_.neighbor_ms += msSince(t);
   }
-  grid_.build(particles_);
-  timings_.neighbor_ms = msSince(t);
-
-  t = Clock::now();
-  computeDensityPressure(scene_.params, kernels_, grid_, particles_);
-  timings_.density_pressure_ms = msSince(t);
-
-  t = Clock::now();
-  computeAccelerations(scene_.params, kernels_, grid_, particles_, track_surface_distance_);
-  const double next_time = time_ + scene_.params.time_step;
-  integrateAndCollide(scene_.params, scene_.boundary, scene_.boundary.stateAt(next_time), particles_);
-  timings_.accel_integrate_collide_ms = msSince(t);
+  solver_->advance(
+      {scene_, particles_, grid_, time_, scene_.params.time_step, track_surface_distance_, timings_, solver_stats_});
 
   ++steps_;
   time_ = static_cast<double>(steps_) * scene_.params.time_step;  // no drift from repeated sums
 
-  timings_.adaptive_ms = 0.0;
   if (adaptive_) {
-    t = Clock::now();
+    const auto t = Clock::now();
     adaptive_->apply(*this);
     timings_.adaptive_ms = msSince(t);
   }

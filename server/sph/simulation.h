@@ -1,6 +1,8 @@
-// One SPH simulation: owns the particles, the neighbour grid and the clock, and runs the step as a
-// short list of named stages (thesis 3.8): neighbour search, density and pressure, acceleration +
-// integration + collision, then the adaptive step when a method has one.
+// One SPH simulation: owns the particles, the neighbour grid, the fluid solver of the scene's
+// preset and the clock, and runs the step (a frame of SimParams::time_step) as a short list of
+// named stages (thesis 3.8): the periodic re-sort, the fluid solver's frame (neighbour search,
+// density and pressure, accelerations + integration + collision; solvers/fluid_solver.h), then
+// the adaptive step when a method has one.
 #pragma once
 
 #include <cstdint>
@@ -10,18 +12,9 @@
 #include "sph/neighbor_grid.h"
 #include "sph/particles.h"
 #include "sph/scene.h"
+#include "sph/solvers/fluid_solver.h"
 
 namespace sph {
-
-// Wall-clock milliseconds of one step, grouped as the thesis measures them (4.1), plus the
-// neighbour search on its own.
-struct PhaseTimings {
-  double neighbor_ms = 0.0;
-  double density_pressure_ms = 0.0;
-  double accel_integrate_collide_ms = 0.0;
-  double adaptive_ms = 0.0;
-  double total_ms = 0.0;
-};
 
 class Simulation;
 
@@ -37,7 +30,9 @@ class Simulation {
   // Fills the scene's water with particles of `start_class` (see fillWater).
   Simulation(const Scene& scene, SizeClass start_class, std::size_t capacity = ParticleSet::kDefaultCapacity);
 
-  void setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) { adaptive_ = std::move(step); }
+  // Without an adaptive step only the start class exists, and the neighbour grid's cells fit its
+  // support; with one, both classes' (the larger).
+  void setAdaptiveStep(std::unique_ptr<AdaptiveStep> step);
   // The surface criterion's distance field advances one neighbour hop per step inside the force
   // loop (see computeAccelerations); adaptive steps that use it switch it on.
   void setSurfaceDistanceTracking(bool on) { track_surface_distance_ = on; }
@@ -54,17 +49,23 @@ class Simulation {
   ParticleSet& particles() { return particles_; }
   const NeighborGrid& grid() const { return grid_; }
   const PhaseTimings& lastTimings() const { return timings_; }
+  const SolverStats& lastSolverStats() const { return solver_stats_; }
   BoxState boxNow() const { return scene_.boundary.stateAt(time_); }
   // Rebuilds the neighbour lists for the current positions (after the adaptive step changed the set).
   void rebuildNeighbors() { grid_.build(particles_); }
 
  private:
+  void configureGrid(bool both_classes);
+
   Scene scene_;
   KernelTable kernels_;
   ParticleSet particles_;
   NeighborGrid grid_;
+  SizeClass start_class_;
+  std::unique_ptr<FluidSolver> solver_;
   std::unique_ptr<AdaptiveStep> adaptive_;
   PhaseTimings timings_;
+  SolverStats solver_stats_;
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   bool track_surface_distance_ = false;

@@ -1,0 +1,333 @@
+#include "sph/boundary_volume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sph {
+
+namespace {
+
+constexpr int kSamples = 512;
+
+// The cubic spline with support h, in units of 1 / m^3.
+double kernel(const CubicKernel& k, double r) { return k.sigma * cubicShape(static_cast<float>(r * k.inv_h)); }
+
+// A(u): the kernel integrated over a plane at distance u, 2 pi integral_u^h W(r) r dr (1 / m);
+// a lattice layer of spacing s contributes s A. Closed form of the cubic spline's pieces would do
+// as well; a fine midpoint rule is exact to float here and keeps one code path for any kernel.
+double planeIntegral(const CubicKernel& k, double u) {
+  constexpr int kSteps = 2000;
+  const double h = k.h;
+  if (u >= h) return 0.0;
+  double sum = 0.0;
+  const double dr = (h - u) / kSteps;
+  for (int i = 0; i < kSteps; ++i) {
+    const double r = u + (i + 0.5) * dr;
+    sum += kernel(k, r) * r * dr;
+  }
+  return 2.0 * std::numbers::pi * sum;
+}
+
+// L(rho): the kernel integrated along a line at distance rho (1 / m^2); a row of the lattice
+// along an edge contributes s^2 L.
+double lineIntegral(const CubicKernel& k, double rho) {
+  constexpr int kSteps = 2000;
+  const double h = k.h;
+  if (rho >= h) return 0.0;
+  const double half = std::sqrt(h * h - rho * rho);
+  double sum = 0.0;
+  const double dz = half / kSteps;
+  for (int i = 0; i < kSteps; ++i) {
+    const double z = (i + 0.5) * dz;
+    sum += kernel(k, std::sqrt(rho * rho + z * z)) * dz;
+  }
+  return 2.0 * sum;
+}
+
+// W'(r) / r of the cubic spline (its gradient factor, kernels.h), 1 / m^5.
+double gradFactor(const CubicKernel& k, double r) { return cubicGradFactor(k, static_cast<float>(r)); }
+
+// B(u): over a plane at distance u, r_t^2 W'(r) / r, r_t the in-plane offset: half of rho^2 over
+// the plane's rings, pi integral rho^3 g(sqrt(u^2 + rho^2)) d rho.
+double planeMoment(const CubicKernel& k, double u) {
+  constexpr int kSteps = 2000;
+  const double h = k.h;
+  if (u >= h) return 0.0;
+  const double top = std::sqrt(h * h - u * u);
+  double sum = 0.0;
+  const double d = top / kSteps;
+  for (int i = 0; i < kSteps; ++i) {
+    const double rho = (i + 0.5) * d;
+    sum += rho * rho * rho * gradFactor(k, std::sqrt(u * u + rho * rho)) * d;
+  }
+  return std::numbers::pi * sum;
+}
+
+// Along a row at distance rho: L1 = integral of g(r) dz, L2 = integral of z^2 g(r) dz.
+double rowMoment(const CubicKernel& k, double rho, bool along) {
+  constexpr int kSteps = 2000;
+  const double h = k.h;
+  if (rho >= h) return 0.0;
+  const double half = std::sqrt(h * h - rho * rho);
+  double sum = 0.0;
+  const double dz = half / kSteps;
+  for (int i = 0; i < kSteps; ++i) {
+    const double z = (i + 0.5) * dz;
+    sum += (along ? z * z : 1.0) * gradFactor(k, std::sqrt(rho * rho + z * z)) * dz;
+  }
+  return 2.0 * sum;
+}
+
+}  // namespace
+
+void BoundaryVolume::Table::at(float x, float& v, float& dv) const {
+  const float u = std::max(x - start, 0.0f) * inv_step;
+  const auto last = static_cast<float>(value.size() - 1);
+  if (u >= last) {
+    v = 0.0f;
+    dv = 0.0f;
+    return;
+  }
+  const auto i = static_cast<std::size_t>(u);
+  const float f = u - static_cast<float>(i);
+  v = (1.0f - f) * value[i] + f * value[i + 1];
+  dv = (1.0f - f) * slope[i] + f * slope[i + 1];
+}
+
+BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicKernel, kSizeClassCount>& kernels,
+                               const std::array<float, kSizeClassCount>& spacing)
+    : kernels_(kernels), spacing_(spacing) {
+  // f and f' sampled over [start, start + span], f' by central differences of f.
+  const auto tabulate = [](double start, double span, auto&& f) {
+    Table t;
+    t.start = static_cast<float>(start);
+    t.inv_step = static_cast<float>(kSamples / span);
+    t.value.resize(kSamples + 1);
+    t.slope.resize(kSamples + 1);
+    const double eps = 0.25 * span / kSamples;
+    for (int i = 0; i <= kSamples; ++i) {
+      const double x = start + span * i / kSamples;
+      t.value[static_cast<std::size_t>(i)] = static_cast<float>(f(x));
+      const double lo = std::max(x - eps, start);
+      t.slope[static_cast<std::size_t>(i)] = static_cast<float>((f(x + eps) - f(lo)) / (x + eps - lo));
+    }
+    t.value.back() = 0.0f;
+    t.slope.back() = 0.0f;
+    return t;
+  };
+  for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+    const CubicKernel& k = kernels[c];
+    plane_[c] = tabulate(0.0, k.h, [&](double u) { return planeIntegral(k, u); });
+    line_[c] = tabulate(0.0, k.h, [&](double rho) { return lineIntegral(k, rho); });
+    plane_moment_[c] = tabulate(0.0, k.h, [&](double u) { return planeMoment(k, u); });
+    row_moment_[c] = tabulate(0.0, k.h, [&](double rho) { return rowMoment(k, rho, false); });
+    row_moment_along_[c] = tabulate(0.0, k.h, [&](double rho) { return rowMoment(k, rho, true); });
+  }
+  // An obstacle of radius R holds layers of the lattice as shells of radius R - (l + 1/2) s.
+  // Sphere: a shell of radius q about the centre at distance D adds s q / D (A(|D - q|) - A(D + q))
+  // (the kernel over the sphere, with r^2 = D^2 + q^2 - 2 D q cos theta).
+  for (const Sphere& sp : boundary.spheres) {
+    std::array<Table, kSizeClassCount> tables;
+    for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+      const CubicKernel& k = kernels[c];
+      const double s = spacing[c];
+      const auto plane = [&](double u) {
+        float v = 0.0f, unused = 0.0f;
+        plane_[c].at(static_cast<float>(u), v, unused);
+        return static_cast<double>(v);
+      };
+      tables[c] = tabulate(sp.radius, k.h, [&](double d) {
+        double phi = 0.0;
+        for (double q = sp.radius - 0.5 * s; q > 0.0 && q > d - k.h; q -= s) {
+          phi += s * q / d * (plane(std::abs(d - q)) - plane(d + q));
+        }
+        return phi;
+      });
+    }
+    spheres_.push_back(std::move(tables));
+    sphere_radius_.push_back(static_cast<float>(sp.radius));
+    sphere_centres_.push_back(sp.centre.cast<float>());
+  }
+  // Cylinder: a shell of radius q adds s q integral over theta of L(|D - q e^{i theta}|).
+  for (const Cylinder& cy : boundary.cylinders) {
+    std::array<Table, kSizeClassCount> tables;
+    for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+      const CubicKernel& k = kernels[c];
+      const double s = spacing[c];
+      tables[c] = tabulate(cy.radius, k.h, [&](double d) {
+        constexpr int kAngles = 256;
+        double phi = 0.0;
+        for (double q = cy.radius - 0.5 * s; q > 0.0 && d - q < k.h; q -= s) {
+          double ring = 0.0;
+          for (int a = 0; a < kAngles; ++a) {
+            const double theta = (a + 0.5) * 2.0 * std::numbers::pi / kAngles;
+            const double rho = std::sqrt(std::max(d * d + q * q - 2.0 * d * q * std::cos(theta), 0.0));
+            float l = 0.0f, unused = 0.0f;
+            line_[c].at(static_cast<float>(rho), l, unused);
+            ring += l * 2.0 * std::numbers::pi / kAngles;
+          }
+          phi += s * q * ring;
+        }
+        return phi;
+      });
+    }
+    cylinders_.push_back(std::move(tables));
+    // M_y of a vertical shell: as Phi, with L2 (z^2 g along the axis) for L.
+    std::array<Table, kSizeClassCount> moments;
+    for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+      const CubicKernel& k = kernels[c];
+      const double s = spacing[c];
+      moments[c] = tabulate(cy.radius, k.h, [&](double d) {
+        constexpr int kAngles = 256;
+        double m = 0.0;
+        for (double q = cy.radius - 0.5 * s; q > 0.0 && d - q < k.h; q -= s) {
+          double ring = 0.0;
+          for (int a = 0; a < kAngles; ++a) {
+            const double theta = (a + 0.5) * 2.0 * std::numbers::pi / kAngles;
+            const double rho = std::sqrt(std::max(d * d + q * q - 2.0 * d * q * std::cos(theta), 0.0));
+            float l = 0.0f, unused = 0.0f;
+            row_moment_along_[c].at(static_cast<float>(rho), l, unused);
+            ring += l * 2.0 * std::numbers::pi / kAngles;
+          }
+          m += s * q * ring;
+        }
+        return m;
+      });
+    }
+    cylinder_moments_.push_back(std::move(moments));
+    cylinder_radius_.push_back(static_cast<float>(cy.radius));
+    cylinder_axes_.emplace_back(static_cast<float>(cy.x), static_cast<float>(cy.z));
+  }
+}
+
+void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int c, BoundarySample& out) const {
+  // Inclusion and exclusion of the solid beyond the three near faces, on the lattice continued
+  // into the walls: layers beyond one face (integrated along it), rows beyond two (along the
+  // edge), points beyond three. A virtual particle beyond the face of axis a lies at
+  // r_a = x_a - x_b = sign_a (d_a + (l + 1/2) s) from the particle (sign: +1 for a min face).
+  const auto cu = static_cast<std::size_t>(c);
+  const CubicKernel& k = kernels_[cu];
+  const float s = spacing_[cu];
+  const int layers = static_cast<int>(std::ceil(k.h / s));
+  float d_phi[3] = {0.0f, 0.0f, 0.0f};  // d Phi / d distance_a
+  bool near[3];
+  for (int a = 0; a < 3; ++a) near[a] = distance[a] + 0.5f * s < k.h;
+  const auto offset = [&](int a, int l) { return distance[a] + (static_cast<float>(l) + 0.5f) * s; };
+  for (int a = 0; a < 3; ++a) {
+    if (!near[a]) continue;
+    for (int l = 0; l < layers; ++l) {
+      const float u = offset(a, l);
+      float v = 0.0f, dv = 0.0f;
+      plane_[cu].at(u, v, dv);
+      out.phi += s * v;
+      d_phi[a] += s * dv;
+      if (a == 1) {
+        // A horizontal layer: r_y = sign u on the whole plane, and the gradient's in-plane parts cancel.
+        out.hydrostatic.y() += s * u * dv;
+      } else {
+        float b = 0.0f, unused = 0.0f;
+        plane_moment_[cu].at(u, b, unused);
+        out.hydrostatic.y() += s * b;
+      }
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    for (int b = a + 1; b < 3; ++b) {
+      if (!near[a] || !near[b]) continue;
+      const int along = 3 - a - b;  // the edge's direction
+      for (int l = 0; l < layers; ++l) {
+        for (int m = 0; m < layers; ++m) {
+          const float u = offset(a, l);
+          const float w = offset(b, m);
+          const float rho = std::sqrt(u * u + w * w);
+          if (rho >= k.h) continue;
+          float v = 0.0f, dv = 0.0f;
+          line_[cu].at(rho, v, dv);
+          out.phi -= s * s * v;
+          d_phi[a] -= s * s * dv * u / rho;
+          d_phi[b] -= s * s * dv * w / rho;
+          // The row's M: r_y constant along it unless the edge is vertical.
+          if (along == 1) {
+            float l2 = 0.0f, unused = 0.0f;
+            row_moment_along_[cu].at(rho, l2, unused);
+            out.hydrostatic.y() -= s * s * l2;
+          } else {
+            float l1 = 0.0f, unused = 0.0f;
+            row_moment_[cu].at(rho, l1, unused);
+            const float ry = a == 1 ? sign[1] * u : sign[1] * w;  // the y axis is a or b
+            const float r_other = a == 1 ? sign[b] * w : sign[a] * u;
+            const int other = a == 1 ? b : a;
+            out.hydrostatic.y() -= s * s * ry * ry * l1;
+            out.hydrostatic[other] -= s * s * ry * r_other * l1;
+          }
+        }
+      }
+    }
+  }
+  if (near[0] && near[1] && near[2]) {
+    for (int l = 0; l < layers; ++l) {
+      for (int m = 0; m < layers; ++m) {
+        for (int o = 0; o < layers; ++o) {
+          const float u[3] = {offset(0, l), offset(1, m), offset(2, o)};
+          const float r = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+          if (r >= k.h) continue;
+          out.phi += s * s * s * cubicW(k, r);
+          const float g = cubicGradFactor(k, r);  // dW/dr / r
+          for (int a = 0; a < 3; ++a) d_phi[a] += s * s * s * g * u[a];
+          const float ry = sign[1] * u[1];
+          for (int a = 0; a < 3; ++a) out.hydrostatic[a] += s * s * s * ry * g * sign[a] * u[a];
+        }
+      }
+    }
+  }
+  for (int a = 0; a < 3; ++a) out.grad[a] = d_phi[a] * sign[a];
+}
+
+BoundarySample BoundaryVolume::sample(const Vec3& x, int c, const BoxState& box) const {
+  BoundarySample out;
+  const CubicKernel& k = kernels_[static_cast<std::size_t>(c)];
+  float distance[3];
+  float sign[3];  // d distance / d x
+  float wall_velocity[3];
+  bool near = false;
+  for (int axis = 0; axis < 3; ++axis) {
+    const float to_min = x[axis] - box.min[axis];
+    const float to_max = box.max[axis] - x[axis];
+    const bool min_side = to_min <= to_max;
+    distance[axis] = std::max(min_side ? to_min : to_max, 0.0f);
+    sign[axis] = min_side ? 1.0f : -1.0f;
+    wall_velocity[axis] = min_side ? box.min_velocity[axis] : box.max_velocity[axis];
+    near = near || distance[axis] < k.h;
+  }
+  if (near) {
+    boxShare(distance, sign, c, out);
+    for (int axis = 0; axis < 3; ++axis) out.grad_dot_wall_velocity += out.grad[axis] * wall_velocity[axis];
+  }
+  const auto cu = static_cast<std::size_t>(c);
+  for (std::size_t s = 0; s < spheres_.size(); ++s) {
+    const Vec3 d = x - sphere_centres_[s];
+    const float dist = std::max(d.norm(), sphere_radius_[s]);
+    if (dist >= sphere_radius_[s] + k.h) continue;
+    float phi = 0.0f, dphi = 0.0f;
+    spheres_[s][cu].at(dist, phi, dphi);
+    out.phi += phi;
+    out.grad += (dphi / dist) * d;
+  }
+  for (std::size_t s = 0; s < cylinders_.size(); ++s) {
+    const float dx = x.x() - cylinder_axes_[s].x();
+    const float dz = x.z() - cylinder_axes_[s].y();
+    const float dist = std::max(std::sqrt(dx * dx + dz * dz), cylinder_radius_[s]);
+    if (dist >= cylinder_radius_[s] + k.h) continue;
+    float phi = 0.0f, dphi = 0.0f, moment = 0.0f, unused = 0.0f;
+    cylinders_[s][cu].at(dist, phi, dphi);
+    cylinder_moments_[s][cu].at(dist, moment, unused);
+    out.phi += phi;
+    out.grad.x() += dphi * dx / dist;
+    out.grad.z() += dphi * dz / dist;
+    out.hydrostatic.y() += moment;
+  }
+  return out;
+}
+
+}  // namespace sph

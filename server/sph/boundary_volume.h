@@ -1,0 +1,75 @@
+// The solid's share of a fluid particle's kernel, so that walls and obstacles count in its density
+// and push it with the pressure the incompressible solvers compute (pbf, dfsph):
+//   Phi(x) = sum over the wall's virtual particles b of V W(|x - x_b|, h),   rho_wall = rho0 Phi,
+// the boundary particles of Akinci et al. 2012 placed on the continuation of each class's rest
+// lattice into the solid (layers at half a spacing and on behind each wall, shells inside each
+// obstacle), and summed analytically rather than stored: along a wall the layers are integrated
+// (a lattice plane of spacing s sums, for a support of two spacings, to its integral), so a face
+// is a function of the distance alone, an edge of two and a corner of three (inclusion and
+// exclusion of the three near faces). In the spirit of the volume maps of Bender et al. 2019, but
+// layered like the fluid: a particle of a resting lattice at a wall then sees exactly the density
+// and the density gradient of the interior (a continuous wall integral gives the first layer 4 %
+// too much density and 20 % too little gradient). Obstacle and box volumes are added, so where an
+// obstacle meets the floor the overlap counts twice (a thin band of extra density along the joint).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "sph/boundary.h"
+#include "sph/kernels.h"
+#include "sph/params.h"
+#include "sph/particles.h"
+
+namespace sph {
+
+// Phi and its gradient at one point, and the part of d(rho_wall)/dt that the solid's own motion
+// makes: grad Phi . v_solid (only moving walls of the box move). And the hydrostatic moment
+//   M = sum_b V_b (y - y_b) grad W(x - x_b),
+// with which the solvers give the wall's virtual particles the pressure of the water at rest
+// around the particle rather than its own (p_b = p + rho0 |g| (y - y_b), Band et al. 2018's
+// extrapolation): with one pressure for all, a particle at a vertical wall, half its neighbours
+// virtual, gets half the support against gravity, sinks along the wall and turns the water over.
+struct BoundarySample {
+  float phi = 0.0f;
+  Vec3 grad = Vec3::Zero();
+  float grad_dot_wall_velocity = 0.0f;
+  Vec3 hydrostatic = Vec3::Zero();  // M; the whole space's would be (0, -1, 0)
+};
+
+class BoundaryVolume {
+ public:
+  // `spacing[c]`: the rest lattice spacing of class c, cbrt(m / rho0), of the virtual particles.
+  BoundaryVolume(const Boundary& boundary, const std::array<CubicKernel, kSizeClassCount>& kernels,
+                 const std::array<float, kSizeClassCount>& spacing);
+
+  // Phi, grad Phi at x for a particle of class c, with the box as it stands at this instant.
+  BoundarySample sample(const Vec3& x, int class_index, const BoxState& box) const;
+
+ private:
+  // A 1D table of a function of distance and its derivative, linear between samples.
+  struct Table {
+    float start = 0.0f, inv_step = 0.0f;
+    std::vector<float> value, slope;
+    void at(float x, float& v, float& dv) const;
+  };
+  // The box's part: the faces, edges and corner within reach, from distances to the nearest face
+  // on each axis (in metres) and which face (min: sign +1, max: -1).
+  void boxShare(const float distance[3], const float sign[3], int c, BoundarySample& out) const;
+
+  std::array<CubicKernel, kSizeClassCount> kernels_;
+  std::array<float, kSizeClassCount> spacing_{};
+  std::array<Table, kSizeClassCount> plane_, line_;  // A(u): a layer's integral; L(rho): a row's
+  // The hydrostatic moment's pieces: B(u) = integral over a plane at distance u of
+  // r_t^2 W'(r) / r (r_t along the plane), and along a row at distance rho, L1 = integral of
+  // W'(r) / r and L2 = integral of z^2 W'(r) / r.
+  std::array<Table, kSizeClassCount> plane_moment_, row_moment_, row_moment_along_;
+  std::vector<std::array<Table, kSizeClassCount>> spheres_, cylinders_;  // Phi(D) per obstacle
+  std::vector<std::array<Table, kSizeClassCount>> cylinder_moments_;      // M_y(D) per cylinder
+  std::vector<float> sphere_radius_, cylinder_radius_;
+  std::vector<Eigen::Vector3f> sphere_centres_;
+  std::vector<Eigen::Vector2f> cylinder_axes_;  // x, z
+};
+
+}  // namespace sph

@@ -1,0 +1,42 @@
+// 16 lanes of AVX-512 for the pair-pass templates (pair_lanes_scalar.h lists the interface).
+// For the AVX-512 forms only; built for AVX-512 like them.
+#pragma once
+
+#include <cstdint>
+
+#include "sph/simd/avx512_lanes.h"
+#include "sph/simd/avx512_target.h"
+
+SPH_AVX512_BEGIN
+
+namespace sph {
+
+struct Avx512Lanes {
+  static constexpr int kWidth = 16;
+  using F = __m512;
+  using I = __m512i;
+  using M = __mmask16;
+
+  static F set(float x) { return _mm512_set1_ps(x); }
+  static F zero() { return _mm512_setzero_ps(); }
+  static M live(std::uint32_t left) { return lanes::liveLanes(left); }
+  static I loadIndex(const std::uint32_t* p, M m) { return _mm512_maskz_loadu_epi32(m, p); }
+  static F gather(M m, I j, const float* base) { return lanes::gather(m, j, base); }
+  static F gather3(M m, I j, const float* base, int axis) { return lanes::gather(m, lanes::tripleIndex(j), base + axis); }
+  static M le(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
+  static M lt(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
+  static M neq(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_NEQ_OQ); }
+  static M andMask(M a, M b) { return static_cast<M>(a & b); }
+  static bool any(M m) { return m != 0; }
+  static F select(M m, F a, F b) { return _mm512_mask_blend_ps(m, b, a); }
+  static F maskz(M m, F a) { return _mm512_maskz_mov_ps(m, a); }
+  static F max(F a, F b) { return _mm512_max_ps(a, b); }
+  static F min(F a, F b) { return _mm512_min_ps(a, b); }
+  static F sqrt(F a) { return _mm512_sqrt_ps(a); }
+  static float sum(F v) { return _mm512_reduce_add_ps(v); }
+  static float minOf(F v) { return _mm512_reduce_min_ps(v); }
+};
+
+}  // namespace sph
+
+SPH_AVX512_END

@@ -1,0 +1,48 @@
+// The lane types the incompressible solvers' pair passes are written against (pair passes are
+// templates on a Lanes type L, one source for every form; simd_level.h): here one lane, plain
+// floats, the scalar form; pair_lanes_avx512.h has 16. A pass walks a particle's neighbour list
+// L::kWidth entries at a time, with a mask of the live lanes.
+//
+//   L::F, L::I, L::M       float lanes, index lanes, a lane mask
+//   set(x), zero()         a value in every lane
+//   live(left)             the first min(left, width) lanes
+//   loadIndex(p, m)        p[l] on the live lanes
+//   gather(m, j, base)     base[j_l] (0 on dead lanes); gather3(m, j, base, axis): base[3 j_l + axis]
+//   le, lt, neq            comparisons -> M; any(m); andMask(a, b)
+//   select(m, a, b)        a where m, else b; maskz(m, a): a where m, else 0
+//   max, min, sqrt; sum(v), minOf(v): over the lanes
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace sph {
+
+struct ScalarLanes {
+  static constexpr int kWidth = 1;
+  using F = float;
+  using I = std::uint32_t;
+  using M = bool;
+
+  static F set(float x) { return x; }
+  static F zero() { return 0.0f; }
+  static M live(std::uint32_t left) { return left > 0; }
+  static I loadIndex(const std::uint32_t* p, M) { return *p; }
+  static F gather(M, I j, const float* base) { return base[j]; }
+  static F gather3(M, I j, const float* base, int axis) { return base[3 * static_cast<std::size_t>(j) + axis]; }
+  static M le(F a, F b) { return a <= b; }
+  static M lt(F a, F b) { return a < b; }
+  static M neq(F a, F b) { return a != b; }
+  static M andMask(M a, M b) { return a && b; }
+  static bool any(M m) { return m; }
+  static F select(M m, F a, F b) { return m ? a : b; }
+  static F maskz(M m, F a) { return m ? a : 0.0f; }
+  static F max(F a, F b) { return a < b ? b : a; }
+  static F min(F a, F b) { return b < a ? b : a; }
+  static F sqrt(F a) { return std::sqrt(a); }
+  static float sum(F v) { return v; }
+  static float minOf(F v) { return v; }
+};
+
+}  // namespace sph

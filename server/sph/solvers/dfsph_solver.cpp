@@ -1,0 +1,226 @@
+#include "sph/solvers/dfsph_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "sph/collision.h"
+#include "sph/simd/simd_level.h"
+
+namespace sph {
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+DfsphPassForms passForms() {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512::dfsphPassForms() : scalar::dfsphPassForms();
+}
+
+VelocityPassForms velocityForms() {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
+}
+
+// The divergence solver leaves particles with fewer neighbours alone (BK17 4.2: at the surface
+// the divergence cannot be estimated from one side); a full resting neighbourhood has about 33.
+constexpr std::uint32_t kDivergenceNeighbours = 20;
+
+// Jacobi relaxation (SPlisHSPlasH's, and IISPH's): the diagonal alone overestimates a particle's
+// say over its own density, since its neighbours move too.
+constexpr float kRelaxation = 0.5f;
+
+// At most this many frames relax fresh water (incompressible_setup.h).
+constexpr int kSettleFrames = 100;
+
+}  // namespace
+
+DfsphSolver::DfsphSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)) {
+  constants_.kernels = setup_.kernels;
+  constants_.rest_density = static_cast<float>(scene.params.rest_density);
+  constants_.boundary = setup_.boundary.get();
+  if (std::getenv("SPH_MIRROR")) constants_.mirror = std::stof(std::getenv("SPH_MIRROR"));
+  velocity_constants_.kernels = setup_.kernels;
+  velocity_constants_.xsph = static_cast<float>(scene.params.xsph_viscosity);
+}
+
+void DfsphSolver::settle(const FrameContext& frame) {
+  const std::vector<float> pressure = restingPressure(frame.scene, setup_, frame.particles);
+  const auto rho0 = static_cast<float>(frame.scene.params.rest_density);
+  for (std::size_t i = 0; i < frame.particles.size(); ++i) frame.particles.kappa[i] = pressure[i] / (rho0 * rho0);
+  relaxAtRest(*this, frame, setup_, kSettleFrames);
+}
+
+void DfsphSolver::advance(const FrameContext& frame) {
+  ParticleSet& p = frame.particles;
+  const SimParams& params = frame.scene.params;
+  frame.stats = SolverStats{};
+  frame.stats.substeps = 0;
+  double done = 0.0;
+  const float spacing = std::min(setup_.spacing[0], setup_.spacing[1]);
+  while (done < frame.dt * (1.0 - 1e-9)) {
+    // CFL: no particle moves more than cfl spacings in a step (BK17 eq. 15 with the diameter).
+    float fastest = 0.0f;
+    const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) reduction(max : fastest)
+    for (std::size_t i = 0; i < n; ++i) fastest = std::max(fastest, p.velocity[i].norm());
+    const double remaining = frame.dt - done;
+    const double bound = fastest > 0.0f ? params.cfl * spacing / fastest : remaining;
+    const int left = std::max(params.max_substeps - frame.stats.substeps, 1);
+    const int steps = std::clamp(static_cast<int>(std::ceil(remaining / bound - 1e-9)), 1, left);
+    const double dt = remaining / steps;
+    substep(frame, frame.time + done, static_cast<float>(dt));
+    done += dt;
+    ++frame.stats.substeps;
+  }
+}
+
+int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt) {
+  ParticleSet& p = frame.particles;
+  const std::size_t n = p.size();
+  const DfsphPassForms forms = passForms();
+  const float rho0 = constants_.rest_density;
+  const SimParams& params = frame.scene.params;
+  static const bool cold = std::getenv("SPH_DF_COLD") != nullptr;
+  static const float warm_factor = std::getenv("SPH_DF_WARM") ? std::stof(std::getenv("SPH_DF_WARM")) : 1.0f;
+  // What the velocities alone would do: the density after the step (rho + dt D(v)), or its rate.
+  arrays_.field = p.velocity.data()->data();
+  arrays_.with_wall_rate = true;
+  forms.change(arrays_, constants_, frame.grid);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool counted = density_target || frame.grid.neighborCount(i) >= kDivergenceNeighbours;
+    // The pressure must undo this much: rho0 - rho_adv (density), -D(v) (divergence), where the
+    // velocities compress; where they do not, it must leave the density as it is (a target of 0,
+    // as SPlisHSPlasH clamps: an under-dense particle asks for no pull, and gets no pressure hole).
+    target_[i] = !counted        ? 0.0f
+                 : density_target ? rho0 - std::max(p.density[i] + dt * change_[i], rho0)
+                                  : -std::max(change_[i], 0.0f);
+    stiffness_[i] = cold ? 0.0f : (target_[i] < 0.0f ? warm_factor * warm[i] : 0.0f);  // warm start (BK17 4.3)
+  }
+  // The pressure acceleration a(k) changes the density after the step by dt^2 D(a) (its rate by
+  // dt D(a)); Jacobi on A k = target, A's diagonal -dt^2 / inverse_diagonal (dfsph_passes.h).
+  const float scale = density_target ? dt * dt : dt;
+  constants_.hydrostatic_gravity = density_target && !std::getenv("SPH_NO_HYDRO") ? static_cast<float>(std::abs(params.gravity)) : 0.0f;
+  const float tolerance =
+      static_cast<float>(density_target ? params.density_tolerance : params.divergence_tolerance / dt) * rho0;
+  arrays_.field = acceleration_.data()->data();
+  arrays_.with_wall_rate = false;
+  int iteration = 0;
+  while (iteration < params.max_iterations) {
+    forms.acceleration(arrays_, constants_, frame.grid);
+    forms.change(arrays_, constants_, frame.grid);
+    double error = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : error)
+    for (std::size_t i = 0; i < n; ++i) {
+      const float residual = target_[i] - scale * change_[i];  // < 0: still compressed
+      stiffness_[i] = std::max(stiffness_[i] - kRelaxation * residual * inverse_diagonal_[i] / scale, 0.0f);
+      error += std::max(-residual, 0.0f);
+    }
+    ++iteration;
+    // BK17 runs at least two density iterations, one divergence iteration.
+    if (error / static_cast<double>(std::max<std::size_t>(n, 1)) <= tolerance && iteration >= (density_target ? 2 : 1)) {
+      break;
+    }
+  }
+  forms.acceleration(arrays_, constants_, frame.grid);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.velocity[i] += dt * acceleration_[i];
+    warm[i] = stiffness_[i];
+  }
+  return iteration;
+}
+
+void DfsphSolver::substep(const FrameContext& frame, double t0, float dt) {
+  ParticleSet& p = frame.particles;
+  const std::size_t n = p.size();
+  const std::size_t room = p.capacity();
+  for (auto* v : {&boundary_grad_, &boundary_moment_, &next_velocity_, &vorticity_, &acceleration_}) {
+    v->reserve(room);
+    v->resize(n);
+  }
+  for (auto* v : {&inverse_diagonal_, &wall_rate_, &change_, &target_, &stiffness_}) {
+    v->reserve(room);
+    v->resize(n);
+  }
+  constants_.box = frame.scene.boundary.stateAt(t0 + dt);
+  velocity_constants_.dt = dt;
+
+  auto t = std::chrono::steady_clock::now();
+  frame.grid.build(p);
+  frame.timings.neighbor_ms += msSince(t);
+
+  DfsphArrays& a = arrays_;
+  a.n = n;
+  a.mass = p.mass.data();
+  a.support = p.support.data();
+  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  a.position = p.position.data()->data();
+  a.density = p.density.data();
+  a.inverse_diagonal = inverse_diagonal_.data();
+  a.boundary_grad = boundary_grad_.data()->data();
+  a.boundary_wall_rate = wall_rate_.data();
+  a.boundary_moment = boundary_moment_.data()->data();
+  a.change = change_.data();
+  a.stiffness = stiffness_.data();
+  a.acceleration = acceleration_.data()->data();
+
+  // Densities, then the divergence solver on the new neighbourhoods (BK17 algorithm 1).
+  t = std::chrono::steady_clock::now();
+  passForms().density(a, constants_, frame.grid);
+  if (frame.scene.params.divergence_tolerance > 0.0) {
+    frame.stats.divergence_iterations += solve(frame, p.kappa_divergence, false, dt);
+  }
+  frame.timings.density_pressure_ms += msSince(t);
+
+  // Gravity and XSPH viscosity (with |n| and the surface-distance hop for the adaptive step).
+  t = std::chrono::steady_clock::now();
+  const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) p.velocity[i] += dt * gravity;
+  VelocityArrays v;
+  v.n = n;
+  v.mass = a.mass;
+  v.support = a.support;
+  v.class_index = a.class_index;
+  v.position = a.position;
+  v.density = a.density;
+  v.velocity = p.velocity.data()->data();
+  v.velocity_next = next_velocity_.data()->data();
+  v.vorticity = vorticity_.data()->data();
+  v.normal_length = p.normal_length.data();
+  v.surface_distance = p.surface_distance.data();
+  v.surface_hop = frame.track_surface_distance ? p.surface_hop.data() : nullptr;
+  velocityForms().smooth(v, velocity_constants_, frame.grid);
+  p.velocity.swap(next_velocity_);
+  frame.timings.accel_integrate_collide_ms += msSince(t);
+
+  // The constant-density solver.
+  t = std::chrono::steady_clock::now();
+  frame.stats.iterations += solve(frame, p.kappa, true, dt);
+  frame.timings.density_pressure_ms += msSince(t);
+
+  // Positions, kept inside (a guard), and the attributes the frames and the adaptive step read.
+  t = std::chrono::steady_clock::now();
+  const float rho0 = constants_.rest_density;
+  double error = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : error)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 x = p.position[i] + dt * p.velocity[i];
+    collideBoundary(frame.scene.boundary, constants_.box, setup_.contact[classIndex(p.size_class[i])], x,
+                    p.velocity[i]);
+    p.position[i] = x;
+    p.pressure[i] = p.kappa[i] * p.density[i] * p.density[i];  // k = p / rho^2
+    p.volume[i] = p.mass[i] / p.density[i];
+    p.pressure_term[i] = p.kappa[i];
+    error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);
+  }
+  frame.stats.density_error = n > 0 ? static_cast<float>(error / static_cast<double>(n)) : 0.0f;
+  frame.timings.accel_integrate_collide_ms += msSince(t);
+}
+
+}  // namespace sph

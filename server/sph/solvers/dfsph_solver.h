@@ -1,0 +1,42 @@
+// Divergence-free SPH (Bender & Koschier 2015, 2017, in the form of SPlisHSPlasH's current DFSPH):
+// each solver step finds the neighbours, computes densities, makes the velocity field
+// divergence-free (the divergence solver), adds gravity and XSPH viscosity, solves for the
+// pressure that brings the density after the step to rho0 (the constant-density solver), and
+// moves the particles. Both solvers are relaxed Jacobi iterations for k = p / rho^2 >= 0 (water
+// pushes, never pulls) to a tolerance, warm-started from the last step's k (attributes, so it
+// follows its particle through reorders, splits and merges). Solver steps obey a CFL bound.
+#pragma once
+
+#include <vector>
+
+#include "sph/solvers/dfsph_passes.h"
+#include "sph/solvers/fluid_solver.h"
+#include "sph/solvers/incompressible_setup.h"
+#include "sph/solvers/velocity_passes.h"
+
+namespace sph {
+
+class DfsphSolver : public FluidSolver {
+ public:
+  explicit DfsphSolver(const Scene& scene);
+  void advance(const FrameContext& frame) override;
+  // Fresh water starts with the pressure of water at rest, relaxed to the solver's own.
+  void settle(const FrameContext& frame) override;
+
+ private:
+  void substep(const FrameContext& frame, double t0, float dt);
+  // One of the two solvers: the k >= 0 that makes the density after the step rho0
+  // (density_target) or its rate 0, from `warm` (the last step's k, which receives this step's),
+  // then the velocities it gives. Returns the iterations taken.
+  int solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt);
+
+  IncompressibleSetup setup_;
+  DfsphConstants constants_;
+  VelocityConstants velocity_constants_;
+  DfsphArrays arrays_;
+  // Scratch, sized once at the ceiling.
+  std::vector<Vec3> boundary_grad_, boundary_moment_, next_velocity_, vorticity_, acceleration_;
+  std::vector<float> inverse_diagonal_, wall_rate_, change_, target_, stiffness_;
+};
+
+}  // namespace sph

@@ -1,0 +1,63 @@
+// A fluid solver advances the particles by one frame of the simulation (SimParams::time_step), in
+// as many solver steps as it takes, and builds the neighbour lists it needs (the adaptive step
+// after it reads the last ones). Which solver: the scene's preset (SimParams::solver).
+//   thesis_solver.h  Mueller SPH of thesis 3.3-3.5, one step per frame
+//   pbf_solver.h     position based fluids (Macklin & Mueller 2013)
+//   dfsph_solver.h   divergence-free SPH (Bender & Koschier 2015, 2017)
+#pragma once
+
+#include <memory>
+
+#include "sph/neighbor_grid.h"
+#include "sph/particles.h"
+#include "sph/scene.h"
+
+namespace sph {
+
+// Wall-clock milliseconds of one frame, grouped as the thesis measures them (4.1): neighbour
+// search; density and pressure (for pbf and dfsph: the pressure solve); accelerations,
+// integration and collision (for pbf and dfsph: velocities and positions); the adaptive step.
+struct PhaseTimings {
+  double neighbor_ms = 0.0;
+  double density_pressure_ms = 0.0;
+  double accel_integrate_collide_ms = 0.0;
+  double adaptive_ms = 0.0;
+  double total_ms = 0.0;
+};
+
+// What a solver did in one frame.
+struct SolverStats {
+  int substeps = 1;
+  int iterations = 0;             // pressure iterations summed over the substeps (pbf, dfsph)
+  int divergence_iterations = 0;  // dfsph
+  float density_error = 0.0f;     // mean max(rho / rho0 - 1, 0) after the last solve (pbf, dfsph)
+};
+
+struct FrameContext {
+  const Scene& scene;
+  ParticleSet& particles;
+  NeighborGrid& grid;
+  double time;  // at the start of the frame
+  double dt;    // the frame
+  bool track_surface_distance;
+  PhaseTimings& timings;
+  SolverStats& stats;
+};
+
+// A solver keeps what it derives from the scene and its scratch, never a reference into the
+// simulation that owns it (the scene comes with each frame), so a Simulation can move.
+class FluidSolver {
+ public:
+  virtual ~FluidSolver() = default;
+  virtual void advance(const FrameContext& frame) = 0;
+  // Freshly filled water (a lattice at rest density): brings it to the state in which the solver
+  // holds it at rest, so that the first steps add no kick. Nothing by default (the thesis's
+  // preset starts from its lattice, as the thesis did).
+  virtual void settle(const FrameContext& /*frame*/) {}
+};
+
+// The solver of `scene.params.solver`, set up for the scene's boundary (the frames must bring the
+// same scene).
+std::unique_ptr<FluidSolver> makeFluidSolver(const Scene& scene);
+
+}  // namespace sph

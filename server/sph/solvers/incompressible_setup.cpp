@@ -1,0 +1,76 @@
+#include "sph/solvers/incompressible_setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sph {
+
+namespace {
+
+// sum over the neighbours of a particle of a simple cubic lattice of |g(r) r|^2, g the gradient
+// factor of the cubic spline (kernels.h).
+double latticeGradSquared(const CubicKernel& k, double spacing) {
+  const int reach = static_cast<int>(std::ceil(k.h / spacing));
+  double sum = 0.0;
+  for (int i = -reach; i <= reach; ++i) {
+    for (int j = -reach; j <= reach; ++j) {
+      for (int l = -reach; l <= reach; ++l) {
+        if (i == 0 && j == 0 && l == 0) continue;
+        const double r = spacing * std::sqrt(static_cast<double>(i * i + j * j + l * l));
+        const double g = cubicGradFactor(k, static_cast<float>(r));
+        sum += g * g * r * r;
+      }
+    }
+  }
+  return sum;
+}
+
+}  // namespace
+
+IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
+  IncompressibleSetup s;
+  const auto classes = scene.params.classes();
+  for (int c = 0; c < kSizeClassCount; ++c) {
+    const auto cu = static_cast<std::size_t>(c);
+    s.kernels[cu] = CubicKernel::forSupport(classes[cu].support);
+    s.mass[cu] = static_cast<float>(classes[cu].mass);
+    s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
+    s.contact[cu] = 0.3f * s.spacing[cu];
+    s.lattice_grad_sq[cu] = s.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
+  }
+  s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels, s.spacing);
+  return s;
+}
+
+std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup& setup, const ParticleSet& p) {
+  float top = -std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    top = std::max(top, p.position[i].y() + 0.5f * setup.spacing[classIndex(p.size_class[i])]);
+  }
+  const auto weight = static_cast<float>(scene.params.rest_density * std::abs(scene.params.gravity));
+  std::vector<float> pressure(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) pressure[i] = weight * std::max(top - p.position[i].y(), 0.0f);
+  return pressure;
+}
+
+int relaxAtRest(FluidSolver& solver, const FrameContext& frame, const IncompressibleSetup& setup, int max_frames) {
+  ParticleSet& p = frame.particles;
+  const float still = 1e-3f * std::min(setup.spacing[0], setup.spacing[1]);
+  std::vector<Vec3> before(p.size());
+  int frames = 0;
+  while (frames < max_frames) {
+    std::copy(p.position.begin(), p.position.end(), before.begin());
+    solver.advance(frame);
+    ++frames;
+    float moved = 0.0f;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      moved = std::max(moved, (p.position[i] - before[i]).norm());
+      p.velocity[i] = Vec3::Zero();
+    }
+    if (moved < still) break;
+  }
+  return frames;
+}
+
+}  // namespace sph

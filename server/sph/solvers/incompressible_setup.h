@@ -1,0 +1,49 @@
+// What pbf and dfsph derive from a scene once: each class's cubic kernel, rest lattice spacing and
+// wall contact distance, the walls' volume (boundary_volume.h), and the sums of a full resting
+// neighbourhood that scale their solvers.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "sph/boundary_volume.h"
+#include "sph/kernels.h"
+#include "sph/particles.h"
+#include "sph/scene.h"
+#include "sph/solvers/fluid_solver.h"
+
+namespace sph {
+
+struct IncompressibleSetup {
+  std::array<CubicKernel, kSizeClassCount> kernels;
+  std::array<float, kSizeClassCount> mass{};
+  std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
+  // The nearest a particle's centre may come to a wall: a guard only (the walls' density keeps the
+  // resting fluid half a spacing off them), so well inside that.
+  std::array<float, kSizeClassCount> contact{};
+  // On a resting lattice of the class: sum_j m_j |grad W_ij|^2 (the gradient sum itself vanishes
+  // by symmetry).
+  std::array<double, kSizeClassCount> lattice_grad_sq{};
+  std::unique_ptr<BoundaryVolume> boundary;
+};
+
+IncompressibleSetup makeIncompressibleSetup(const Scene& scene);
+
+// The pressure of water at rest, rho0 |g| (y_top - y), y_top the top face of the highest layer:
+// the solvers' warm start for a fresh lattice (settle()).
+std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup& setup, const ParticleSet& particles);
+
+// Relaxes fresh water quasi-statically: frames of `solver` with the velocities set back to zero
+// after each, until no particle moves more than a thousandth of a spacing in a frame (or, for
+// water that never comes to rest, `max_frames`). The result is the packing and the pressure in
+// which the solver itself holds the water at rest. Returns the frames taken.
+int relaxAtRest(FluidSolver& solver, const FrameContext& frame, const IncompressibleSetup& setup, int max_frames);
+
+// A frame's scratch array sized to n without shrinking (no allocation once at the ceiling).
+template <typename T>
+void sizeScratch(std::vector<T>& v, std::size_t n) {
+  if (v.size() < n) v.resize(n);
+}
+
+}  // namespace sph

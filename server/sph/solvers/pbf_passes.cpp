@@ -1,0 +1,15 @@
+// The scalar form of the pbf passes: pbf_passes.inc on one lane.
+#include "sph/solvers/pbf_passes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+
+#include "sph/collision.h"
+#include "sph/simd/pair_lanes_scalar.h"
+
+namespace sph::scalar {
+using Lanes = ScalarLanes;
+#include "sph/solvers/pbf_passes.inc"
+}  // namespace sph::scalar

@@ -1,0 +1,79 @@
+// The pair passes of position based fluids (Macklin & Mueller 2013, "MM13"), one form per
+// instruction set (simd_level.h), the same source for both (pbf_passes.inc). pbf_solver.cpp
+// orders them into a solver step.
+//
+// With particle masses m (two size classes), the density constraint of particle i is
+//   C_i = rho_i / rho0 - 1,  rho_i = sum_j m_j W_ij + rho0 Phi_i         (MM13 eq. 1; Phi: walls)
+// and a Jacobi iteration computes
+//   dlambda_i = -C_i / (sum_k |grad_k C_i|^2 / m_k + eps)                      (MM13 eqs. 9-11)
+// and moves every particle by
+//   dx_i = 1 / (rho0 m_i) sum_j (dl_i m_j + dl_j m_i + s_ij (l_i m_j + l_j m_i) / 2) grad W_ij
+//          + 2 dl_i grad Phi_i / m_i                                            (MM13 eq. 12)
+// the mass-weighted form of MM13's update (equal masses give theirs), which keeps sum m dx = 0:
+// momentum is conserved pair by pair; the wall's virtual particles carry i's own dl (mirrored,
+// as dfsph_passes.h explains: one-sided, the neighbours would push a wall particle into the wall).
+// Beyond MM13, lambda is the step's total multiplier,
+// projected to lambda <= 0 (water pushes, never pulls: a particle below rest density keeps
+// only what compression gave it, so the free surface does not clump), and dl is the change the
+// projection allowed; pbf_solver.cpp starts each step from the last step's lambda (a warm
+// start). s_ij = -k (W_ij / W(dq h))^n is MM13's artificial pressure (eq. 13) in units of l_c,
+// the lambda of a full neighbourhood at C = 1, applied once a step.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "sph/boundary_volume.h"
+#include "sph/kernels.h"
+#include "sph/neighbor_grid.h"
+
+namespace sph {
+
+// The per-particle arrays the passes read and write (packed x, y, z for vectors).
+struct PbfArrays {
+  std::size_t n = 0;
+  const float* mass = nullptr;
+  const float* support = nullptr;
+  const std::uint8_t* class_index = nullptr;  // SizeClass as 0 / 1
+  float* position = nullptr;  // predicted positions; the correction pass writes position_next
+  float* position_next = nullptr;
+  float* density = nullptr;      // rho_i of the last lambda pass
+  float* lambda = nullptr;       // the step's total multiplier, <= 0
+  float* lambda_step = nullptr;  // the change of lambda the correction pass applies
+};
+
+struct PbfConstants {
+  std::array<CubicKernel, kSizeClassCount> kernels;
+  float rest_density = 0.0f;
+  std::array<float, kSizeClassCount> relaxation{};    // eps, absolute
+  std::array<float, kSizeClassCount> lambda_scale{};  // l_c: lambda of a full neighbourhood at C = 1
+  std::array<float, kSizeClassCount> tensile_reference{};  // W(dq h) per class
+  float tensile_k = 0.0f;
+  float omega = 1.0f;
+  int tensile_n = 4;
+  std::array<float, kSizeClassCount> contact{};  // nearest a centre may come to a wall
+  const BoundaryVolume* boundary = nullptr;
+  float mirror = 2.0f;
+  const Boundary* obstacles = nullptr;
+  BoxState box;
+};
+
+// The pass functions of one form (the velocity passes are velocity_passes.h):
+//   lambda   density and dlambda of every particle at `position`; lambda += dlambda projected to
+//            <= 0, lambda_step = the change made
+//   correct  position_next = position + dx from lambda_step (with the artificial pressure when
+//            `tensile`), kept inside the box and out of the obstacles
+struct PbfPassForms {
+  void (*lambda)(const PbfArrays&, const PbfConstants&, const NeighborGrid&);
+  void (*correct)(const PbfArrays&, const PbfConstants&, const NeighborGrid&, bool tensile);
+};
+
+namespace scalar {
+PbfPassForms pbfPassForms();
+}  // namespace scalar
+namespace avx512 {
+PbfPassForms pbfPassForms();
+}  // namespace avx512
+
+}  // namespace sph

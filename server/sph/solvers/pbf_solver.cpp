@@ -1,0 +1,189 @@
+#include "sph/solvers/pbf_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "sph/collision.h"
+#include "sph/simd/simd_level.h"
+#include "sph/thread_share.h"
+
+namespace sph {
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+PbfPassForms passForms() {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms();
+}
+
+VelocityPassForms velocityForms() {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
+}
+
+// At most this many frames relax fresh water (incompressible_setup.h).
+constexpr int kSettleFrames = 200;
+
+}  // namespace
+
+PbfSolver::PbfSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)) {
+  const SimParams& p = scene.params;
+  PbfConstants& c = constants_;
+  c.kernels = setup_.kernels;
+  c.rest_density = static_cast<float>(p.rest_density);
+  for (std::size_t k = 0; k < kSizeClassCount; ++k) {
+    // A full resting neighbourhood's constraint denominator (pbf_passes.h): sum_j m_j |grad W|^2 / rho0^2.
+    const double full = setup_.lattice_grad_sq[k] / (p.rest_density * p.rest_density);
+    c.relaxation[k] = static_cast<float>(p.pbf_relaxation * full);
+    c.lambda_scale[k] = static_cast<float>(-1.0 / (full * (1.0 + p.pbf_relaxation)));
+    c.tensile_reference[k] = cubicW(setup_.kernels[k], static_cast<float>(p.pbf_tensile_dq) * setup_.kernels[k].h);
+    c.contact[k] = setup_.contact[k];
+  }
+  c.tensile_k = static_cast<float>(p.pbf_tensile_k);
+  c.omega = std::getenv("SPH_PBF_OMEGA") ? std::stof(std::getenv("SPH_PBF_OMEGA")) : 0.5f;
+  c.tensile_n = p.pbf_tensile_n;
+  c.boundary = setup_.boundary.get();
+  if (std::getenv("SPH_MIRROR")) c.mirror = std::stof(std::getenv("SPH_MIRROR"));
+  velocity_constants_.kernels = setup_.kernels;
+  velocity_constants_.xsph = static_cast<float>(p.xsph_viscosity);
+  velocity_constants_.vorticity_epsilon = static_cast<float>(p.vorticity_confinement);
+}
+
+void PbfSolver::settle(const FrameContext& frame) {
+  // lambda = -p m dt^2 / rho0 (pbf_solver.cpp's pressure) with the pressure of water at rest.
+  ParticleSet& p = frame.particles;
+  const double dt = frame.dt / frame.scene.params.substeps;
+  const std::vector<float> pressure = restingPressure(frame.scene, setup_, p);
+  const auto factor = static_cast<float>(dt * dt / frame.scene.params.rest_density);
+  for (std::size_t i = 0; i < p.size(); ++i) p.pbf_lambda[i] = -pressure[i] * p.mass[i] * factor;
+  const int frames = std::getenv("SPH_NO_RELAX") ? 0 : relaxAtRest(*this, frame, setup_, kSettleFrames);
+  if (std::getenv("SPH_DEBUG_SETTLE")) std::fprintf(stderr, "settle: %d frames\n", frames);
+}
+
+void PbfSolver::advance(const FrameContext& frame) {
+  const int steps = frame.scene.params.substeps;
+  const double dt = frame.dt / steps;
+  frame.stats = SolverStats{};
+  frame.stats.substeps = steps;
+  for (int s = 0; s < steps; ++s) substep(frame, frame.time + s * dt, static_cast<float>(dt));
+}
+
+float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
+  ParticleSet& p = frame.particles;
+  const std::size_t n = p.size();
+  const std::size_t room = p.capacity();
+  for (auto* v : {&old_position_, &next_position_, &next_velocity_, &vorticity_}) {
+    v->reserve(room);
+    v->resize(n);
+  }
+  lambda_.resize(n);
+  lambda_step_.resize(n);
+  constants_.box = frame.scene.boundary.stateAt(t0 + dt);
+  constants_.obstacles = &frame.scene.boundary;
+  velocity_constants_.dt = dt;
+  const PbfPassForms forms = passForms();
+
+  // Predict (MM13 algorithm 1, lines 1-4): gravity, then the positions it leads to.
+  auto t = std::chrono::steady_clock::now();
+  const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    old_position_[i] = p.position[i];
+    p.velocity[i] += dt * gravity;
+    Vec3 x = p.position[i] + dt * p.velocity[i];
+    Vec3 unused_velocity = Vec3::Zero();
+    collideBoundary(frame.scene.boundary, constants_.box, constants_.contact[classIndex(p.size_class[i])], x,
+                    unused_velocity);
+    p.position[i] = x;
+  }
+  frame.timings.accel_integrate_collide_ms += msSince(t);
+
+  t = std::chrono::steady_clock::now();
+  frame.grid.build(p);
+  frame.timings.neighbor_ms += msSince(t);
+
+  PbfArrays a;
+  a.n = n;
+  a.mass = p.mass.data();
+  a.support = p.support.data();
+  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  a.density = p.density.data();
+  a.lambda = lambda_.data();
+  a.lambda_step = lambda_step_.data();
+
+  // Solve the density constraints (lines 8-19): first the last step's multipliers (the warm
+  // start) with the artificial pressure, then lambda and the corrections, a few times.
+  t = std::chrono::steady_clock::now();
+  const auto correct = [&](bool tensile) {
+    a.position = p.position.data()->data();
+    a.position_next = next_position_.data()->data();
+    forms.correct(a, constants_, frame.grid, tensile);
+    p.position.swap(next_position_);
+  };
+  const bool warm = !std::getenv("SPH_PBF_COLD");
+  std::fill_n(lambda_.begin(), n, 0.0f);
+  std::copy_n(p.pbf_lambda.begin(), n, lambda_step_.begin());
+  if (warm) {
+    std::copy_n(p.pbf_lambda.begin(), n, lambda_.begin());
+    correct(constants_.tensile_k > 0.0f);
+  }
+  for (int iteration = 0; iteration < frame.scene.params.pbf_iterations; ++iteration) {
+    a.position = p.position.data()->data();
+    forms.lambda(a, constants_, frame.grid);
+    correct(false);
+  }
+  std::copy_n(lambda_.begin(), n, p.pbf_lambda.begin());
+  frame.stats.iterations += frame.scene.params.pbf_iterations;
+  frame.timings.density_pressure_ms += msSince(t);
+
+  // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22).
+  t = std::chrono::steady_clock::now();
+  const float inv_dt = 1.0f / dt;
+  float moved = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : moved)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 step = p.position[i] - old_position_[i];
+    moved = std::max(moved, step.norm());
+    p.velocity[i] = step * inv_dt;
+  }
+  VelocityArrays v;
+  v.n = n;
+  v.mass = a.mass;
+  v.support = a.support;
+  v.class_index = a.class_index;
+  v.position = p.position.data()->data();
+  v.density = p.density.data();
+  v.velocity = p.velocity.data()->data();
+  v.velocity_next = next_velocity_.data()->data();
+  v.vorticity = vorticity_.data()->data();
+  v.normal_length = p.normal_length.data();
+  v.surface_distance = p.surface_distance.data();
+  v.surface_hop = frame.track_surface_distance ? p.surface_hop.data() : nullptr;
+  const VelocityPassForms velocity = velocityForms();
+  velocity.smooth(v, velocity_constants_, frame.grid);
+  if (velocity_constants_.vorticity_epsilon > 0.0f) velocity.confine(v, velocity_constants_, frame.grid);
+  p.velocity.swap(next_velocity_);
+
+  // The attributes the rest of the step and the frames read: density (of the last constraint
+  // pass), volume, and the pressure whose impulse the corrections were: lambda = -m dt^2 p / rho0
+  // (the correction as a pressure force over dt^2, pbf_passes.h).
+  const float rho0 = static_cast<float>(frame.scene.params.rest_density);
+  double error = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : error)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.pressure[i] = -rho0 * lambda_[i] / (p.mass[i] * dt * dt);
+    p.volume[i] = p.mass[i] / p.density[i];
+    p.pressure_term[i] = p.pressure[i] / (p.density[i] * p.density[i]);
+    error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);
+  }
+  frame.stats.density_error = n > 0 ? static_cast<float>(error / static_cast<double>(n)) : 0.0f;
+  frame.timings.accel_integrate_collide_ms += msSince(t);
+  return moved;
+}
+
+}  // namespace sph

@@ -1,0 +1,19 @@
+// The thesis's fluid (3.3-3.5): density and the state equation p = k (rho - rho0), pressure,
+// viscosity, gravity and surface-tension forces, semi-implicit Euler, collisions: one step a frame.
+#pragma once
+
+#include "sph/fluid_stages.h"
+#include "sph/solvers/fluid_solver.h"
+
+namespace sph {
+
+class ThesisSolver : public FluidSolver {
+ public:
+  explicit ThesisSolver(const Scene& scene);
+  void advance(const FrameContext& frame) override;
+
+ private:
+  KernelTable kernels_;
+};
+
+}  // namespace sph

@@ -1,0 +1,14 @@
+// The scalar form of the velocity passes: velocity_passes.inc on one lane.
+#include "sph/solvers/velocity_passes.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <span>
+
+#include "sph/simd/pair_lanes_scalar.h"
+
+namespace sph::scalar {
+using Lanes = ScalarLanes;
+#include "sph/solvers/velocity_passes.inc"
+}  // namespace sph::scalar

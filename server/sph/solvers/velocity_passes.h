@@ -1,0 +1,56 @@
+// The velocity passes the incompressible solvers share, one form per instruction set
+// (simd_level.h), the same source for both (velocity_passes.inc):
+//   smooth    XSPH (Macklin & Mueller 2013 eq. 17, after Schechter & Bridson 2012):
+//             v_i + c sum_j V_j (v_j - v_i) W_ij into velocity_next; the vorticity
+//             omega_i = sum_j V_j (v_i - v_j) x grad W_ij (MM13 eq. 15, the SPH curl); |n| of the
+//             colour field n_i = sum_j V_j grad W_ij and the surface-distance hop, for the
+//             adaptive step's surface criterion (3.44), (3.45)
+//   confine   vorticity confinement (MM13 eq. 16): velocity_next += dt eps (N x omega_i),
+//             N = eta / |eta|, eta = grad |omega| = sum_j V_j (|omega_j| - |omega_i|) grad W_ij
+// V_j = m_j / rho_j.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "sph/kernels.h"
+#include "sph/neighbor_grid.h"
+
+namespace sph {
+
+struct VelocityArrays {
+  std::size_t n = 0;
+  const float* mass = nullptr;
+  const float* support = nullptr;
+  const std::uint8_t* class_index = nullptr;
+  const float* position = nullptr;  // packed x, y, z
+  const float* density = nullptr;
+  const float* velocity = nullptr;
+  float* velocity_next = nullptr;
+  float* vorticity = nullptr;
+  float* normal_length = nullptr;
+  const float* surface_distance = nullptr;
+  float* surface_hop = nullptr;  // null: the surface distance is not tracked
+};
+
+struct VelocityConstants {
+  std::array<CubicKernel, kSizeClassCount> kernels;
+  float dt = 0.0f;
+  float xsph = 0.0f;
+  float vorticity_epsilon = 0.0f;  // m/s: the confinement's acceleration is eps (N x omega)
+};
+
+struct VelocityPassForms {
+  void (*smooth)(const VelocityArrays&, const VelocityConstants&, const NeighborGrid&);
+  void (*confine)(const VelocityArrays&, const VelocityConstants&, const NeighborGrid&);
+};
+
+namespace scalar {
+VelocityPassForms velocityPassForms();
+}  // namespace scalar
+namespace avx512 {
+VelocityPassForms velocityPassForms();
+}  // namespace avx512
+
+}  // namespace sph
