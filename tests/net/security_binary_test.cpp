@@ -128,3 +128,26 @@ TEST(ServerBinary, ALowDescriptorLimitCapsPeersAndTheServerKeepsServing) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(RelayBinary, ForwardsFramesAndBindsLoopbackUnlessToldOtherwise) {
+  auto server = net_test::startServer(net_test::testOptions(sph::Method::Regular));
+  Child refused({SPH_RELAY_BINARY, "--upstream", server->endpoints().frames, "--endpoint", "tcp://lo:*"});
+  EXPECT_EQ(refused.waitExit(), 2);
+  EXPECT_NE(refused.output.find("needs CURVE"), std::string::npos) << refused.output;
+
+  Child relay({SPH_RELAY_BINARY, "--upstream", server->endpoints().frames, "--endpoint", "tcp://127.0.0.1:*"});
+  const std::string endpoint = relay.waitForWordAfter("endpoint relay ");
+  ASSERT_EQ(endpoint.rfind("tcp://127.0.0.1:", 0), 0u) << relay.output;
+  zmq::context_t ctx;
+  net_test::FrameSubscriber viewer(ctx, endpoint);
+  auto frame = viewer.next();
+  ASSERT_TRUE(frame) << relay.output;
+  EXPECT_EQ(frame->scene(), "tiny_pool");
+  ::kill(relay.pid, SIGTERM);
+  EXPECT_EQ(relay.waitExit(), 0) << relay.output;
+  EXPECT_NE(relay.output.find("final status: "), std::string::npos) << relay.output;
+}
+
+}  // namespace
