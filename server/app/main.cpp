@@ -4,8 +4,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
-#include <csignal>
-#include <ctime>
+#include <chrono>
 #include <exception>
 #include <map>
 #include <string>
@@ -16,6 +15,7 @@
 #include "net/curve_cli.h"
 #include "net/fd_limit.h"
 #include "process/omp_wait.h"
+#include "process/stop_signals.h"
 #include "scene/scene_loader.h"
 
 namespace {
@@ -148,25 +148,17 @@ int main(int argc, char** argv) {
     o.server.net.curve = std::move(security.own);
     o.server.curve_clients = std::move(security.clients);
     o.server.sim.insecure = security.insecure;
-  } catch (const curve::CertificateError& e) {
-    spdlog::error("{}", e.what());
-    return 1;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
-    return 2;
+    return curve::exitCodeFor(e);
   }
   // Every peer holds a descriptor: take all the system allows, and leave room for the rest.
   const net::FileLimit fds = net::raiseFileLimit();
   o.server.net.fd_limit = fds.now;
   o.server.net.max_peers = net::peersPerSocket(fds.now, 4, o.max_peers);
 
-  // Block the stop signals before any thread starts (libzmq's included), so only the wait below
-  // receives them and shutdown runs in an ordinary thread, not in a signal handler.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  // Before any thread starts (libzmq's included): shutdown runs here, not in a signal handler.
+  process::StopSignals stop_signals;
 
   try {
     app::Server server(o.server);
@@ -187,13 +179,10 @@ int main(int argc, char** argv) {
           "may watch and control the simulation");
     }
     server.start();
-    const timespec poll_interval{0, 100'000'000};
     int signal = 0;
-    while (!server.finished()) {
-      signal = sigtimedwait(&stop_signals, nullptr, &poll_interval);
-      if (signal > 0) break;
+    while (!server.finished() && (signal = stop_signals.wait(std::chrono::milliseconds(100))) == 0) {
     }
-    if (signal > 0) spdlog::info("{} received, shutting down", signal == SIGINT ? "SIGINT" : "SIGTERM");
+    if (signal > 0) spdlog::info("{} received, shutting down", process::StopSignals::name(signal));
     server.stop();
     spdlog::info("final status: {}", server.statusLine());
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <exception>
 
 #include "net/curve_setup.h"
 
@@ -22,6 +23,12 @@ inline void addServerOptions(CLI::App& app, ServerFiles& files) {
 inline void addClientOptions(CLI::App& app, ClientFiles& files, const std::string& prefix = "--") {
   app.add_option(prefix + "curve-secret", files.secret, "CURVE: this client's own key pair (NAME.key_secret)");
   app.add_option(prefix + "curve-server", files.server, "CURVE: the server's public key (its NAME.key)");
+}
+
+// A program's exit status when loading its keys failed: 1 for a key file it cannot use, 2 for options
+// that do not go together (as for any other bad command line).
+inline int exitCodeFor(const std::exception& error) {
+  return dynamic_cast<const CertificateError*>(&error) != nullptr ? 1 : 2;
 }
 
 }  // namespace curve

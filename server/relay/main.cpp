@@ -4,13 +4,13 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
-#include <csignal>
-#include <ctime>
+#include <chrono>
 #include <exception>
 #include <string>
 
 #include "net/curve_cli.h"
 #include "net/fd_limit.h"
+#include "process/stop_signals.h"
 #include "relay/relay.h"
 
 int main(int argc, char** argv) {
@@ -48,22 +48,15 @@ int main(int argc, char** argv) {
     options.clients = std::move(security.clients);
     insecure = security.insecure;
     options.upstream_curve = curve::loadClientFiles(upstream_keys);
-  } catch (const curve::CertificateError& e) {
-    spdlog::error("{}", e.what());
-    return 1;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
-    return 2;
+    return curve::exitCodeFor(e);
   }
   const net::FileLimit fds = net::raiseFileLimit();
   options.fd_limit = fds.now;
   options.max_peers = net::peersPerSocket(fds.now, 1, max_peers);
 
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  process::StopSignals stop_signals;  // before any thread starts
   try {
     relay::Relay relay(options);
     spdlog::info("endpoint relay {}", relay.downstream());
@@ -77,12 +70,10 @@ int main(int argc, char** argv) {
       return fmt::format("{} frames forwarded, {} viewers, {} dropped{}", relay.forwarded(), relay.peers(),
                          relay.peersDropped(), warning);
     };
-    const timespec poll_interval{0, 100'000'000};
     auto next_status = std::chrono::steady_clock::now();
     for (;;) {
-      const int signal = sigtimedwait(&stop_signals, nullptr, &poll_interval);
-      if (signal > 0) {
-        spdlog::info("{} received, shutting down", signal == SIGINT ? "SIGINT" : "SIGTERM");
+      if (const int signal = stop_signals.wait(std::chrono::milliseconds(100))) {
+        spdlog::info("{} received, shutting down", process::StopSignals::name(signal));
         break;
       }
       if (status_interval_s > 0.0 && std::chrono::steady_clock::now() >= next_status) {
