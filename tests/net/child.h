@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "net_test_util.h"
+#include "support/server_args.h"
 
 namespace net_test {
 
@@ -109,23 +110,11 @@ struct Child {
 // sph_server on the small test scene (gaze method), every endpoint an ephemeral loopback port. The
 // tests replace arguments by index: 6 is the method, 10 the frames endpoint.
 inline std::vector<std::string> serverArgs() {
-  return {SPH_SERVER_BINARY,
-          "--scene",
-          "tiny_pool",
-          "--scene-dir",
-          SPH_NET_TEST_SCENE_DIR,
-          "--method",
-          "gaze",
-          "--threads",
-          "1",
-          "--frames-endpoint",
-          "tcp://127.0.0.1:*",
-          "--gaze-endpoint",
-          "tcp://127.0.0.1:*",
-          "--pose-endpoint",
-          "tcp://127.0.0.1:*",
-          "--control-endpoint",
-          "tcp://127.0.0.1:*"};
+  std::vector<std::string> args = sph_test::tinyPoolServerArgs(SPH_SERVER_BINARY, SPH_NET_TEST_SCENE_DIR);
+  for (const char* option : {"--frames-endpoint", "--gaze-endpoint", "--pose-endpoint", "--control-endpoint"}) {
+    args.insert(args.end(), {option, "tcp://127.0.0.1:*"});
+  }
+  return args;
 }
 
 }  // namespace net_test

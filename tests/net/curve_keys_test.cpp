@@ -11,20 +11,13 @@
 
 #include "net/curve_setup.h"
 #include "net/curve_sockets.h"
+#include "temp_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "sph-keys-XXXXXX").string();
-    path = ::mkdtemp(pattern.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
+using net_test::TempDir;
 
 void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 

@@ -8,6 +8,7 @@
 #include "child.h"
 #include "net/curve_keys.h"
 #include "net_test_util.h"
+#include "temp_dir.h"
 
 namespace {
 
@@ -15,14 +16,8 @@ namespace fs = std::filesystem;
 using net_test::Child;
 using net_test::serverArgs;
 
-struct KeyDir {
-  fs::path path;
-  KeyDir() {
-    std::string pattern = (fs::temp_directory_path() / "sph-keygen-XXXXXX").string();
-    path = ::mkdtemp(pattern.data());
-  }
-  ~KeyDir() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
+struct KeyDir : net_test::TempDir {
+  KeyDir() : TempDir("sph-keygen") {}
   // Runs sph_keygen; true when it succeeded.
   bool make(const std::string& name, const std::string& role, const std::string& where) const {
     Child keygen({SPH_KEYGEN_BINARY, name, "--role", role, "--out", where});

@@ -2,25 +2,23 @@
 // stranger's key it does not, written by the same code sph_keygen uses into a fresh folder.
 #pragma once
 
-#include <stdlib.h>
-
 #include <filesystem>
 #include <string>
 
 #include "net/curve_keys.h"
 #include "net/curve_sockets.h"
+#include "temp_dir.h"
 
 namespace net_test {
 
 struct TestKeys {
-  std::filesystem::path dir;
+  TempDir temp{"sph-test-keys"};
+  std::filesystem::path dir = temp.path;
   curve::Certificate server;
   curve::AllowList allowed;
   curve::ClientKeys operator_keys, viewer_keys, stranger_keys;
 
   TestKeys() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "sph-test-keys-XXXXXX").string();
-    dir = ::mkdtemp(pattern.data());
     std::filesystem::create_directory(dir / "clients");
     server = make("server", "server", dir.string());
     operator_keys = client(make("op", "operator", (dir / "clients").string()));
@@ -28,9 +26,6 @@ struct TestKeys {
     stranger_keys = client(make("stranger", "operator", dir.string()));  // not in clients/
     allowed = curve::readAllowList((dir / "clients").string());
   }
-  ~TestKeys() { std::filesystem::remove_all(dir); }
-  TestKeys(const TestKeys&) = delete;
-  TestKeys& operator=(const TestKeys&) = delete;
 
   std::string path(const std::string& name) const { return (dir / name).string(); }
 

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/server_args.h"
 #include "viewer/child_process.h"
 
 namespace sph_test {

@@ -23,17 +23,9 @@ std::string scratch(const std::string& name) {
 }
 
 std::vector<std::string> serverArgs() {
-  return {SPH_SERVER_BINARY,
-          "--scene",
-          "tiny_pool",
-          "--scene-dir",
-          SPH_NET_TEST_SCENE_DIR,
-          "--method",
-          "gaze",
-          "--threads",
-          "1",
-          "--status-interval",
-          "0"};
+  std::vector<std::string> args = sph_test::tinyPoolServerArgs(SPH_SERVER_BINARY, SPH_NET_TEST_SCENE_DIR);
+  args.insert(args.end(), {"--status-interval", "0"});
+  return args;
 }
 
 std::unique_ptr<viewer_test::ChildProcess> startBridge(const std::string& endpoint, const std::string& source_id,

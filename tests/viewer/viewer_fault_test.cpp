@@ -24,17 +24,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::vector<std::string> serverArgs() {
-  return {SPH_SERVER_PATH,
-          "--scene",
-          "tiny_pool",
-          "--scene-dir",
-          SPH_NET_TEST_SCENE_DIR,
-          "--method",
-          "gaze",
-          "--threads",
-          "1",
-          "--status-interval",
-          "0"};
+  std::vector<std::string> args = sph_test::tinyPoolServerArgs(SPH_SERVER_PATH, SPH_NET_TEST_SCENE_DIR);
+  args.insert(args.end(), {"--status-interval", "0"});
+  return args;
 }
 
 std::vector<std::string> viewerArgs(const sph_test::ServerEndpoints& ep, const std::string& id) {
