@@ -81,9 +81,10 @@ void SimLoop::run() {
     now = Clock::now();
     const bool running = !settings_.paused && !finished_.load();
     // A gaze sample no step has used may start the step up to one dt early, so the frame it refines
-    // need not wait out the idle part of the step clock; sim time then leads wall time by less than
-    // dt, and never more, since the step after it waits for its own time again.
-    const bool early = running && gazeWaiting() && now >= nextStepTime() - seconds(session_.sim().params().time_step);
+    // need not wait out the idle part of the step clock. No step starts more than dt before its
+    // time, so sim time leads wall time by less than dt, and the step rate stays the real-time one.
+    const Clock::duration dt = seconds(session_.sim().params().time_step);
+    const bool early = running && gazeWaiting() && now >= nextStepTime() - dt;
     if (running && (settings_.free_run || now >= nextStepTime() || early)) {
       if (!settings_.free_run && now - nextStepTime() > kMaxLag) restartClock(now);
       try {
@@ -114,6 +115,7 @@ void SimLoop::run() {
     if (running && settings_.free_run) continue;
     Clock::time_point deadline = pacer_.nextDue();
     if (running) deadline = std::min(deadline, nextStepTime());
+    if (running && gazeWaiting()) deadline = std::min(deadline, nextStepTime() - dt);
     if (options_.status_interval_s > 0.0) deadline = std::min(deadline, next_status_);
     mailbox_.waitUntil(deadline);
   }

@@ -116,6 +116,7 @@ NetLoop::NetLoop(zmq::context_t& context, const NetConfig& config, InputMailbox&
   bound_.gaze = bindResolved(gaze_, config.endpoints.gaze, "gaze");
   bound_.pose = bindResolved(pose_, config.endpoints.pose, "camera pose");
   bound_.control = bindResolved(control_, config.endpoints.control, "control");
+  frames_inproc_ = bound_.frames.rfind("inproc://", 0) == 0;
 
   const int id = next_pipe_id.fetch_add(1);
   frame_pipe_endpoint_ = "inproc://sph-frames-" + std::to_string(id);
@@ -243,8 +244,11 @@ void NetLoop::drainMonitors() {
   counters_.peers_dropped.store(dropped);
   counters_.accept_failures.store(accept_failures);
   counters_.handshake_failures.store(handshake_failures);
-  // A peer that subscribes twice is counted once: never more subscribers than connections.
-  counters_.subscriptions.store(std::min<std::int64_t>(subscriptions_.subscribed(), monitors_[0]->peers()));
+  // A peer that subscribes twice is counted once: never more subscribers than connections (which an
+  // inproc endpoint does not report).
+  const std::int64_t subscribed = subscriptions_.subscribed();
+  counters_.subscriptions.store(frames_inproc_ ? subscribed
+                                               : std::min<std::int64_t>(subscribed, monitors_[0]->peers()));
 }
 
 curve::PeerRole NetLoop::roleOf(const zmq::message_t& message) const {

@@ -119,6 +119,7 @@ class NetLoop {
   std::vector<std::unique_ptr<ConnectionMonitor>> monitors_;  // frames, gaze, pose, control
   FrameSubscriptions subscriptions_;
   bool curve_ = false;
+  bool frames_inproc_ = false;
   std::chrono::steady_clock::time_point escalate_after_{};
   LogThrottle hoarder_log_;
   std::vector<zmq::message_t> parts_;  // scratch for multipart receives
