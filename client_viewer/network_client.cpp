@@ -25,7 +25,8 @@ std::int64_t systemMicros() {
       .count();
 }
 
-void commonOptions(zmq::socket_t& s) {
+void commonOptions(zmq::socket_t& s, const std::optional<curve::ClientKeys>& keys) {
+  if (keys) curve::makeCurveClient(s, *keys);
   s.set(zmq::sockopt::linger, 0);
   s.set(zmq::sockopt::heartbeat_ivl, kHeartbeatIvlMs);
   s.set(zmq::sockopt::heartbeat_timeout, kHeartbeatTimeoutMs);
@@ -66,12 +67,12 @@ void NetworkClient::start() {
   s->frames.set(zmq::sockopt::conflate, 1);
   s->frames.set(zmq::sockopt::maxmsgsize, kMaxFrameBytes);
   s->frames.set(zmq::sockopt::subscribe, "");
-  commonOptions(s->frames);
+  commonOptions(s->frames, endpoints_.curve);
   s->frames.connect(endpoints_.frames);
 
   for (zmq::socket_t* pub : {&s->pose, &s->gaze}) {
     pub->set(zmq::sockopt::sndhwm, 4);
-    commonOptions(*pub);
+    commonOptions(*pub, endpoints_.curve);
   }
   s->pose.connect(endpoints_.pose);
   s->gaze.connect(endpoints_.gaze);
@@ -81,7 +82,7 @@ void NetworkClient::start() {
   s->control.set(zmq::sockopt::immediate, 1);
   s->control.set(zmq::sockopt::maxmsgsize, kMaxReplyBytes);
   s->control.set(zmq::sockopt::sndhwm, 16);
-  commonOptions(s->control);
+  commonOptions(s->control, endpoints_.curve);
   s->control.connect(endpoints_.control);
 
   sockets_ = std::move(s);

@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "decoded_frame.h"
+#include "net/curve_sockets.h"
 #include "proto/sph.pb.h"
 
 namespace viewer {
@@ -27,6 +28,8 @@ struct Endpoints {
   std::string gaze = "tcp://127.0.0.1:5556";
   std::string pose = "tcp://127.0.0.1:5557";
   std::string control = "tcp://127.0.0.1:5558";
+  // CURVE keys for every socket (--curve-secret, --curve-server); none: plaintext.
+  std::optional<curve::ClientKeys> curve;
 };
 
 struct PoseData {

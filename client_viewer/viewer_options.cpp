@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <map>
 
+#include "net/curve_cli.h"
+
 namespace viewer {
 
 std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
@@ -21,6 +23,8 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   app.add_option("--pose-endpoint", o.endpoints.pose, "Camera pose input of the server")->capture_default_str();
   app.add_option("--control-endpoint", o.endpoints.control, "Control ROUTER of the server (DEALER here)")
       ->capture_default_str();
+  curve::ClientFiles curve_files;
+  curve::addClientOptions(app, curve_files);
   app.add_option("--viewer-id", o.viewer_id, "Id sent with every camera pose (default viewer-<pid>)");
   app.add_option("--width", o.width, "Window width in screen coordinates")
       ->check(CLI::Range(64, 8192))
@@ -60,6 +64,12 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+  try {
+    o.endpoints.curve = curve::loadClientFiles(curve_files);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sph_viewer: %s\n", e.what());
+    return 2;
   }
   if (gaze_at_opt->count() > 0) o.gaze_at = gaze_at;
   if (eye_opt->count() > 0) o.eye = eye;

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "net/curve_cli.h"
 #include "paced_source.h"
 
 namespace gaze_bridge {
@@ -16,6 +17,7 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
       ->check(CLI::IsMember({"pub", "push"}))
       ->capture_default_str();
   app.add_option("--source-id", o.bridge.source_id, "source_id in every GazeSample (default: the source name)");
+  curve::addClientOptions(app, o.curve);
 
   app.add_option("--pupil-host", o.pupil.host, "Pupil Capture host")->capture_default_str();
   app.add_option("--pupil-port", o.pupil.remote_port, "Pupil Remote port")
@@ -94,6 +96,7 @@ void finishBridgeOptions(BridgeOptions& o) {
   if (o.source != "replay" && !o.replay_path.empty()) {
     throw std::invalid_argument("--replay FILE is only used with --source replay");
   }
+  o.bridge.publisher.curve = curve::loadClientFiles(o.curve);  // throws for a missing or bad file
   validateProcessorParams(o.bridge.processor);
   gaze::validateFixationModelParams(o.synthetic);
 }

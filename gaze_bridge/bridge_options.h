@@ -10,6 +10,7 @@
 #include "bridge.h"
 #include "gaze/fixation_model.h"
 #include "gazepoint_source.h"
+#include "net/curve_setup.h"
 #include "pupil_source.h"
 
 namespace gaze_bridge {
@@ -28,6 +29,7 @@ struct BridgeOptions {
   bool no_filter = false;
   double duration_s = 0.0;  // 0: until SIGINT/SIGTERM
   std::string log_level = "info";
+  curve::ClientFiles curve;  // read into bridge.publisher.curve by finishBridgeOptions
 };
 
 void addBridgeOptions(CLI::App& app, BridgeOptions& options);

@@ -19,6 +19,7 @@ GazePublisher::GazePublisher(zmq::context_t& context, const PublisherParams& par
     // Queue only on live connections, so samples do not pile up for a server that is down.
     socket_.set(zmq::sockopt::immediate, 1);
   }
+  if (params.curve) curve::makeCurveClient(socket_, *params.curve);
   try {
     socket_.connect(params.endpoint);
   } catch (const zmq::error_t& error) {

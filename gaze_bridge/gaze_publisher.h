@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <zmq.hpp>
 
 #include "gaze_processor.h"
+#include "net/curve_sockets.h"
 #include "proto/sph.pb.h"
 
 namespace gaze_bridge {
@@ -19,6 +21,7 @@ enum class PublisherSocket { kPub, kPush };
 struct PublisherParams {
   std::string endpoint = "tcp://127.0.0.1:5556";
   PublisherSocket socket = PublisherSocket::kPub;
+  std::optional<curve::ClientKeys> curve;  // --curve-secret, --curve-server; none: plaintext
 };
 
 class GazePublisher {

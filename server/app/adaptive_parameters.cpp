@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "net/peer_text.h"
+
 namespace app {
 namespace {
 
@@ -26,7 +28,7 @@ const std::map<std::string, double sph::AdaptiveConfig::*>& doubleFields() {
 
 std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string& name, double value, bool& known) {
   known = true;
-  if (!std::isfinite(value)) return "parameter '" + name + "' is not finite";
+  if (!std::isfinite(value)) return "parameter '" + net::echoText(name) + "' is not finite";
   const auto& fields = doubleFields();
   if (const auto it = fields.find(name); it != fields.end()) {
     config.*(it->second) = value;
@@ -38,7 +40,7 @@ std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string&
     return {};
   }
   known = false;
-  return "unknown parameter '" + name + "'";
+  return "unknown parameter '" + net::echoText(name) + "'";
 }
 
 void adaptiveParameters(const sph::AdaptiveConfig& config, std::map<std::string, double>& out) {

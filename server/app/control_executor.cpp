@@ -1,5 +1,6 @@
 #include "app/control_executor.h"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "app/adaptive_parameters.h"
 #include "net/frame_encoder.h"
+#include "net/peer_text.h"
 #include "scene/scene_loader.h"
 
 namespace app {
@@ -30,15 +32,13 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
   sph::AdaptiveConfig config = target.session.config();
   RunSettings settings = target.settings;
   for (const auto& [name, value] : request.values()) {
-    if (!std::isfinite(value)) return "parameter '" + name + "' is not finite";
+    if (!std::isfinite(value)) return "parameter '" + net::echoText(name) + "' is not finite";
     bool adaptive = false;
     const std::string error = setAdaptiveParameter(config, name, value, adaptive);
     if (adaptive) {
       if (!error.empty()) return error;
     } else if (name == "publish_hz") {
-      if (value <= 0.0 || value > kMaxPublishHz) {
-        return "publish_hz must be in (0, " + std::to_string(static_cast<int>(kMaxPublishHz)) + "]";
-      }
+      if (std::string e = publishHzError(value); !e.empty()) return e;
       settings.publish_hz = value;
     } else if (name == "quantized") {
       if (!asBool(value, settings.quantized)) return name + " must be 0 or 1";
@@ -62,10 +62,17 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
 void fail(ControlReply& reply, ErrorCode code, const std::string& error) {
   reply.set_ok(false);
   reply.set_error_code(code);
-  reply.set_error(error);
+  // Whatever the message quotes (an exception's text included), the reply and the log line that
+  // repeats it stay short and printable.
+  reply.set_error(net::echoText(error, net::kMaxErrorBytes));
 }
 
 }  // namespace
+
+std::string publishHzError(double hz) {
+  if (std::isfinite(hz) && hz >= kMinPublishHz && hz <= kMaxPublishHz) return {};
+  return fmt::format("publish_hz must be between {} and {} frames per second", kMinPublishHz, kMaxPublishHz);
+}
 
 void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
   const SimSession& s = target.session;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include "app/sim_session.h"
 #include "proto/sph.pb.h"
@@ -18,7 +19,12 @@ struct RunSettings {
   bool quantized = false;  // POSITION_ENCODING_QUANTIZED16 instead of FLOAT32
 };
 
+// The one range of publish_hz, for the command line and set_parameters alike: below 0.001 Hz (a
+// frame every 17 minutes) is no stream at all, and 1/hz must stay a representable duration.
+inline constexpr double kMinPublishHz = 1e-3;
 inline constexpr double kMaxPublishHz = 1000.0;
+// "" when `hz` is in [kMinPublishHz, kMaxPublishHz], else the error naming publish_hz.
+std::string publishHzError(double hz);
 
 struct ControlTarget {
   SimSession& session;

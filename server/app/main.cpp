@@ -1,17 +1,21 @@
 // sph_server: loads a scene, runs an SPH method in real time (or free-run), publishes frames and takes
 // gaze, camera poses and control requests over ZeroMQ. See server/app/README.md.
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
-#include <csignal>
-#include <ctime>
+#include <chrono>
 #include <exception>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/server.h"
+#include "net/curve_cli.h"
+#include "net/fd_limit.h"
 #include "process/omp_wait.h"
+#include "process/stop_signals.h"
 #include "scene/scene_loader.h"
 
 namespace {
@@ -24,7 +28,24 @@ struct CliOptions {
   std::string gaze_socket = "sub";
   std::string pose_socket = "sub";
   std::string log_level = "info";
+  curve::ServerFiles curve;
+  int max_peers = net::kDefaultMaxPeers;
 };
+
+// --publish-hz takes what set_parameters takes: one check for both (app::publishHzError).
+CLI::Validator publishHzValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double hz = 0.0;
+        try {
+          hz = std::stod(text);
+        } catch (const std::exception&) {
+          return "not a number: " + text;
+        }
+        return app::publishHzError(hz);
+      },
+      fmt::format("HZ in [{}, {}]", app::kMinPublishHz, app::kMaxPublishHz));
+}
 
 void addOptions(CLI::App& cli, CliOptions& o) {
   app::SimLoopOptions& sim = o.server.sim;
@@ -36,7 +57,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
   cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
   cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
-      ->check(CLI::Range(1e-3, app::kMaxPublishHz))
+      ->check(publishHzValidator())
       ->capture_default_str();
   cli.add_flag("--quantized", sim.settings.quantized, "16-bit positions relative to the box (6 bytes per particle)");
   cli.add_flag("--velocities", sim.velocities, "add velocities (3 float32) to every frame");
@@ -76,7 +97,12 @@ void addOptions(CLI::App& cli, CliOptions& o) {
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
                  "surface_includes_walls, gaze_*); repeatable");
   cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0.0, 86400.0))
+      ->capture_default_str();
+  curve::addServerOptions(cli, o.curve);
+  cli.add_option("--max-peers", o.max_peers,
+                 "connections each socket takes at a time (fewer when the descriptor limit asks)")
+      ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))
@@ -115,13 +141,24 @@ int main(int argc, char** argv) {
   net::inputSocketTypeByName(o.gaze_socket, o.server.net.gaze_type);
   net::inputSocketTypeByName(o.pose_socket, o.server.net.pose_type);
 
-  // Block the stop signals before any thread starts (libzmq's included), so only the wait below
-  // receives them and shutdown runs in an ordinary thread, not in a signal handler.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  const net::Endpoints& wanted = o.server.net.endpoints;
+  try {
+    curve::ServerSecurity security =
+        curve::loadServerSecurity(o.curve, {wanted.frames, wanted.gaze, wanted.pose, wanted.control});
+    o.server.net.curve = std::move(security.own);
+    o.server.curve_clients = std::move(security.clients);
+    o.server.sim.insecure = security.insecure;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return curve::exitCodeFor(e);
+  }
+  // Every peer holds a descriptor: take all the system allows, and leave room for the rest.
+  const net::FileLimit fds = net::raiseFileLimit();
+  o.server.net.fd_limit = fds.now;
+  o.server.net.max_peers = net::peersPerSocket(fds.now, 4, o.max_peers);
+
+  // Before any thread starts (libzmq's included): shutdown runs here, not in a signal handler.
+  process::StopSignals stop_signals;
 
   try {
     app::Server server(o.server);
@@ -132,14 +169,20 @@ int main(int argc, char** argv) {
     spdlog::info("endpoint control {}", ep.control);
     spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene, o.method.empty() ? "(scene default)" : o.method,
                  o.server.sim.settings.publish_hz, o.server.sim.settings.free_run ? "free-run" : "real time");
-    server.start();
-    const timespec poll_interval{0, 100'000'000};
-    int signal = 0;
-    while (!server.finished()) {
-      signal = sigtimedwait(&stop_signals, nullptr, &poll_interval);
-      if (signal > 0) break;
+    spdlog::info("file descriptors: limit {} (was {}), up to {} peers per socket", fds.now, fds.before,
+                 o.server.net.max_peers);
+    if (o.server.net.curve) {
+      spdlog::info("CURVE on every socket: {} client keys allowed", o.server.curve_clients.size());
+    } else if (o.server.sim.insecure) {
+      spdlog::warn(
+          "INSECURE: bound beyond loopback without CURVE (--insecure): anyone who reaches these ports "
+          "may watch and control the simulation");
     }
-    if (signal > 0) spdlog::info("{} received, shutting down", signal == SIGINT ? "SIGINT" : "SIGTERM");
+    server.start();
+    int signal = 0;
+    while (!server.finished() && (signal = stop_signals.wait(std::chrono::milliseconds(100))) == 0) {
+    }
+    if (signal > 0) spdlog::info("{} received, shutting down", process::StopSignals::name(signal));
     server.stop();
     spdlog::info("final status: {}", server.statusLine());
   } catch (const std::exception& e) {

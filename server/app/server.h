@@ -4,19 +4,24 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <zmq.hpp>
 
 #include "app/sim_loop.h"
+#include "net/curve_keys.h"
 #include "net/input_mailbox.h"
 #include "net/net_loop.h"
 #include "net/rejection_log.h"
+#include "net/zap_handler.h"
 
 namespace app {
 
 struct ServerOptions {
   net::NetConfig net;
   SimLoopOptions sim;
+  // With net.curve: the client keys the ZAP handler lets in, each with its role (docs/security.md).
+  curve::AllowList curve_clients;
 };
 
 class Server {
@@ -38,11 +43,15 @@ class Server {
   const SimCounters& simCounters() const { return sim_->counters(); }
   const net::NetCounters& netCounters() const { return net_->counters(); }
   const net::RejectionLog& rejections() const { return rejections_; }
+  // Connections the ZAP handler refused (0 without CURVE).
+  std::uint64_t keysRefused() const { return zap_ ? zap_->refused() : 0; }
 
  private:
   zmq::context_t context_;
   net::InputMailbox mailbox_;
   net::RejectionLog rejections_;
+  // Before the sockets: it must answer from the first handshake on, and outlive them.
+  std::unique_ptr<curve::ZapHandler> zap_;
   std::unique_ptr<net::NetLoop> net_;
   std::unique_ptr<SimLoop> sim_;
   bool running_ = false;

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "net/input_validation.h"
 
@@ -33,7 +34,9 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
                options.velocities),
       settings_(options.settings),
       session_(options.scene_dir, options.adaptive_overrides, [this](sph::AdaptiveController& c) { feedGaze(c); }),
-      control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }} {
+      control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }},
+      pacer_(options.settings.publish_hz, Clock::now()),
+      refusal_log_(options.log_interval) {
   session_.load(options.scene, options.method, /*allow_paths=*/true);
   net::fromScreenCamera(session_.camera(), camera_msg_);
   camera_msg_.set_viewer_id("scene");
@@ -68,15 +71,21 @@ void SimLoop::run() {
   omp_set_num_threads(std::max(1, options_.threads));
   Clock::time_point now = Clock::now();
   restartClock(now);
-  next_publish_ = now;
+  pacer_ = PublishPacer(settings_.publish_hz, now);
   next_status_ = now + seconds(options_.status_interval_s);
   rate_window_start_ = now;
   while (!stop_.load()) {
     handleControls();
+    pacer_.setRate(settings_.publish_hz);  // a new rate applies from the next frame on
     applyCamera();
     now = Clock::now();
     const bool running = !settings_.paused && !finished_.load();
-    if (running && (settings_.free_run || now >= nextStepTime())) {
+    // A gaze sample no step has used may start the step up to one dt early, so the frame it refines
+    // need not wait out the idle part of the step clock. No step starts more than dt before its
+    // time, so sim time leads wall time by less than dt, and the step rate stays the real-time one.
+    const Clock::duration dt = seconds(session_.sim().params().time_step);
+    const bool early = running && gazeWaiting() && now >= nextStepTime() - dt;
+    if (running && (settings_.free_run || now >= nextStepTime() || early)) {
       if (!settings_.free_run && now - nextStepTime() > kMaxLag) restartClock(now);
       try {
         session_.step();
@@ -89,25 +98,24 @@ void SimLoop::run() {
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
       now = Clock::now();
+      // The frame that shows a new gaze sample's refinement goes out now, not at the next tick.
+      if (std::exchange(step_used_new_gaze_, false)) pacer_.freshSample();
       if (options_.max_steps > 0 && session_.sim().stepCount() >= options_.max_steps) {
-        publish();
+        publish(now);
         finished_ = true;
         spdlog::info("ran {} steps (--max-steps)", session_.sim().stepCount());
       }
     }
-    if (now >= next_publish_) {
-      publish();
-      next_publish_ += seconds(1.0 / settings_.publish_hz);
-      if (next_publish_ < now) next_publish_ = now + seconds(1.0 / settings_.publish_hz);
-    }
+    if (pacer_.due(now)) publish(now);
     updateRates(now);
     if (options_.status_interval_s > 0.0 && now >= next_status_) {
       spdlog::info("{}", statusLine());
       next_status_ = now + seconds(options_.status_interval_s);
     }
     if (running && settings_.free_run) continue;
-    Clock::time_point deadline = next_publish_;
+    Clock::time_point deadline = pacer_.nextDue();
     if (running) deadline = std::min(deadline, nextStepTime());
+    if (running && gazeWaiting()) deadline = std::min(deadline, nextStepTime() - dt);
     if (options_.status_interval_s > 0.0) deadline = std::min(deadline, next_status_);
     mailbox_.waitUntil(deadline);
   }
@@ -119,9 +127,15 @@ void SimLoop::handleControls() {
   mailbox_.takeControls(requests_);
   for (const net::ControlRequest& request : requests_) {
     ControlEffects effects;
-    const gsph::v1::ControlReply reply = executeControl(request.control, control_target_, effects);
+    gsph::v1::ControlReply reply = executeControl(request.control, control_target_, effects);
+    reply.mutable_status()->set_client_role(curve::roleName(request.role));
     if (!reply.ok()) {
-      spdlog::info("control request {} refused: {}", request.control.request_id(), reply.error());
+      // A refusal's error repeats peer text only cut short (control_executor.cpp), and a flood of
+      // refusals logs a line per interval, with their count.
+      if (const std::uint64_t n = refusal_log_.note()) {
+        spdlog::info("refused {} control request(s) (latest: request {}: {})", n, request.control.request_id(),
+                     reply.error());
+      }
     }
     if (effects.restart_clock) restartClock(Clock::now());
     if (!session_.cameraFromClient()) {
@@ -144,6 +158,13 @@ void SimLoop::applyCamera() {
   camera_msg_.set_sequence(pose.sequence);
 }
 
+bool SimLoop::gazeWaiting() const {
+  const sph::Method m = session_.method();
+  net::GazeArrival arrival;
+  return (m == sph::Method::Gaze || m == sph::Method::Hybrid) && mailbox_.latestGaze(arrival) &&
+         arrival.arrived != last_fed_gaze_;
+}
+
 void SimLoop::feedGaze(sph::AdaptiveController& controller) {
   net::GazeArrival arrival;
   sph::GazeInput input;
@@ -152,6 +173,10 @@ void SimLoop::feedGaze(sph::AdaptiveController& controller) {
     input.x = arrival.x;
     input.y = arrival.y;
     input.age_s = std::chrono::duration<double>(Clock::now() - arrival.arrived).count();
+    if (arrival.arrived != last_fed_gaze_) {
+      last_fed_gaze_ = arrival.arrived;
+      step_used_new_gaze_ = true;
+    }
     gaze_echo_.has_sample = true;
     gaze_echo_.sample_sequence = arrival.sequence;
     gaze_echo_.sample_bridge_time_us = arrival.bridge_time_us;
@@ -160,7 +185,8 @@ void SimLoop::feedGaze(sph::AdaptiveController& controller) {
   controller.setGaze(input);
 }
 
-void SimLoop::publish() {
+void SimLoop::publish(Clock::time_point now) {
+  pacer_.published(now);
   net::FrameInfo info;
   info.sequence = frame_sequence_;
   info.scene = session_.scene().name;
@@ -215,6 +241,7 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
       settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large, p.size() - large,
       net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
       counters_.frames_dropped.load(), rejections_.total());
+  if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";
   std::lock_guard lock(status_mutex_);
   status_line_ = std::move(line);
 }
@@ -234,6 +261,7 @@ void SimLoop::fillCounters(gsph::v1::ServerStatus& status) const {
           : -1.0f);
   status.set_frames_published(counters_.frames_published.load());
   status.set_inputs_rejected(rejections_.total());
+  status.set_insecure(options_.insecure);
 }
 
 }  // namespace app

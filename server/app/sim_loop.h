@@ -15,9 +15,11 @@
 #include <vector>
 
 #include "app/control_executor.h"
+#include "app/publish_pacer.h"
 #include "app/sim_session.h"
 #include "net/frame_encoder.h"
 #include "net/input_mailbox.h"
+#include "net/log_throttle.h"
 #include "net/net_loop.h"
 #include "net/sim_outbox.h"
 
@@ -35,6 +37,11 @@ struct SimLoopOptions {
   std::string camera_source;       // empty: the most recent pose from any viewer
   std::int64_t max_steps = 0;      // stop after this many steps (0: run until stopped)
   double status_interval_s = 5.0;  // periodic one-line status (0: off)
+  // At most one line per interval for each kind of refused input (control refusals here, rejected
+  // messages in net::RejectionLog).
+  std::chrono::milliseconds log_interval{1000};
+  // Bound beyond loopback without CURVE (--insecure): said in every status line and ServerStatus.
+  bool insecure = false;
 };
 
 // Counters the status line, the control replies and the tests read from other threads.
@@ -69,9 +76,11 @@ class SimLoop {
   void handleControls();
   void applyCamera();
   void feedGaze(sph::AdaptiveController& controller);
+  // A gaze sample has arrived that no step has used (and the method uses gaze).
+  bool gazeWaiting() const;
   void restartClock(Clock::time_point now);
   Clock::time_point nextStepTime() const;
-  void publish();
+  void publish(Clock::time_point now);
   void fillCounters(gsph::v1::ServerStatus& status) const;
   void updateRates(Clock::time_point now);
   void refreshStatusLine(Clock::time_point now);
@@ -95,7 +104,10 @@ class SimLoop {
   // Pacing: sim time follows wall time from the anchor on.
   Clock::time_point anchor_wall_{};
   double anchor_sim_ = 0.0;
-  Clock::time_point next_publish_{};
+  PublishPacer pacer_;
+  Clock::time_point last_fed_gaze_{};  // arrival of the sample last handed to the controller
+  bool step_used_new_gaze_ = false;
+  net::LogThrottle refusal_log_;
   Clock::time_point next_status_{};
   Clock::time_point rate_window_start_{};
   std::int64_t rate_window_steps_ = 0;

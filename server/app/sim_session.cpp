@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "app/adaptive_parameters.h"
+#include "net/peer_text.h"
 #include "scene/scene_loader.h"
 
 namespace app {
@@ -33,7 +34,7 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
   // Remote peers get names from the scene folder only: they must not make the server read any path.
   const std::vector<std::string> names = scene::listScenes(scene_dir_);
   if (!allow_paths && std::find(names.begin(), names.end(), scene_name) == names.end()) {
-    throw scene::SceneError("no scene '" + scene_name + "' in " + scene_dir_);
+    throw scene::SceneError("no scene '" + net::echoText(scene_name) + "' in " + scene_dir_);
   }
   const sph::Scene scene = scene::loadScene(scene_name, scene_dir_);
   sph::Method chosen = sph::Method::Regular;

@@ -5,9 +5,14 @@
 namespace net {
 
 void InputMailbox::putGaze(const GazeArrival& gaze) {
-  std::lock_guard lock(mutex_);
-  gaze_ = gaze;
-  has_gaze_ = true;
+  {
+    std::lock_guard lock(mutex_);
+    gaze_ = gaze;
+    has_gaze_ = true;
+    woken_ = true;
+  }
+  // An idle simulation thread may step early for a new sample (SimLoop::run).
+  wake_cv_.notify_one();
 }
 
 bool InputMailbox::latestGaze(GazeArrival& out) const {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "net/curve_keys.h"
 #include "proto/sph.pb.h"
 #include "sph/camera.h"
 
@@ -40,7 +41,8 @@ struct PoseArrival {
 // A control request and the ROUTER envelope to answer it on.
 struct ControlRequest {
   std::string identity;
-  bool has_delimiter = false;  // REQ peers put an empty frame between identity and payload
+  bool has_delimiter = false;                        // REQ peers put an empty frame between identity and payload
+  curve::PeerRole role = curve::PeerRole::Operator;  // what the peer's key may do (curve_keys.h)
   gsph::v1::Control control;
 };
 
@@ -63,7 +65,7 @@ class InputMailbox {
   bool pushControl(ControlRequest&& request);
   void takeControls(std::vector<ControlRequest>& out);
 
-  // Sleeps until `deadline`, or until a control request arrives or wake() is called.
+  // Sleeps until `deadline`, or until a control request or a gaze sample arrives or wake() is called.
   void waitUntil(SteadyTime deadline);
   void wake();
 

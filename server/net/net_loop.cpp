@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstring>
 
+#include "net/curve_sockets.h"
 #include "net/input_validation.h"
 
 namespace net {
@@ -16,6 +17,9 @@ namespace {
 constexpr int kDrainBatch = 512;
 constexpr std::size_t kMaxTopicBytes = 64;
 constexpr auto kPollTimeout = std::chrono::milliseconds(50);
+// After a drop, how long the dropped peer's unsubscriptions may take to come back before the
+// refused subscriptions still held count against the others.
+constexpr auto kDropSettleTime = std::chrono::seconds(1);
 
 std::atomic<int> next_pipe_id{0};
 
@@ -84,22 +88,35 @@ NetLoop::NetLoop(zmq::context_t& context, const NetConfig& config, InputMailbox&
       pose_(makeInput(context, config.pose_type)),
       control_(context, zmq::socket_type::router),
       frame_pipe_(context, zmq::socket_type::pair),
-      reply_pipe_(context, zmq::socket_type::pair) {
+      reply_pipe_(context, zmq::socket_type::pair),
+      subscriptions_(rejections),
+      curve_(config.curve.has_value()),
+      hoarder_log_(config.log_interval) {
   applyCommonOptions(frames_);
   frames_.set(zmq::sockopt::sndhwm, config.frame_hwm);
-  // Subscriptions are input too; VERBOSER passes every subscribe and unsubscribe (also those of a
-  // peer that disconnects), so counting them gives the number of subscribers.
-  frames_.set(zmq::sockopt::maxmsgsize, static_cast<int64_t>(kMaxInputBytes));
+  // Subscriptions are input too (frame_subscriptions.h); VERBOSER passes every subscribe and
+  // unsubscribe, also those libzmq makes for a peer that disconnects.
+  frames_.set(zmq::sockopt::maxmsgsize, static_cast<int64_t>(kMaxSubscriptionBytes));
+  frames_.set(zmq::sockopt::rcvhwm, kSubscriptionQueue);
   frames_.set(zmq::sockopt::xpub_verboser, 1);
   applyInputOptions(control_);
   // Replies to a peer whose queue is full or who has gone are dropped rather than waited on.
   control_.set(zmq::sockopt::router_mandatory, 0);
   control_.set(zmq::sockopt::sndhwm, kInputReceiveHwm);
 
+  const std::pair<zmq::socket_t*, const char*> sockets[] = {
+      {&frames_, "frames"}, {&gaze_, "gaze"}, {&pose_, "camera pose"}, {&control_, "control"}};
+  for (const auto& [socket, role] : sockets) {
+    if (config.curve) curve::makeCurveServer(*socket, *config.curve, role);
+    // Before bind, so no connection goes unseen.
+    monitors_.push_back(std::make_unique<ConnectionMonitor>(context, *socket, role, config.max_peers, config.fd_limit,
+                                                            config.log_interval));
+  }
   bound_.frames = bindResolved(frames_, config.endpoints.frames, "frames");
   bound_.gaze = bindResolved(gaze_, config.endpoints.gaze, "gaze");
   bound_.pose = bindResolved(pose_, config.endpoints.pose, "camera pose");
   bound_.control = bindResolved(control_, config.endpoints.control, "control");
+  frames_inproc_ = bound_.frames.rfind("inproc://", 0) == 0;
 
   const int id = next_pipe_id.fetch_add(1);
   frame_pipe_endpoint_ = "inproc://sph-frames-" + std::to_string(id);
@@ -130,9 +147,13 @@ void NetLoop::run() {
       {pose_.handle(), 0, ZMQ_POLLIN, 0},       {control_.handle(), 0, ZMQ_POLLIN, 0},
       {frame_pipe_.handle(), 0, ZMQ_POLLIN, 0}, {reply_pipe_.handle(), 0, ZMQ_POLLIN, 0},
   };
+  for (const auto& monitor : monitors_) items.push_back({monitor->events().handle(), 0, ZMQ_POLLIN, 0});
   while (!stop_.load(std::memory_order_relaxed)) {
     try {
       zmq::poll(items, kPollTimeout);
+      bool monitor_events = false;
+      for (std::size_t i = 6; i < items.size(); ++i) monitor_events |= (items[i].revents & ZMQ_POLLIN) != 0;
+      if (monitor_events) drainMonitors();
       // Frames first: they are what the latency budget is spent on.
       if (items[4].revents & ZMQ_POLLIN) forwardFrames();
       if (items[1].revents & ZMQ_POLLIN) drainGaze();
@@ -171,25 +192,69 @@ void NetLoop::forwardReplies() {
 void NetLoop::drainSubscriptions() {
   for (int n = 0; n < kDrainBatch; ++n) {
     zmq::message_t m;
-    if (!frames_.recv(m, zmq::recv_flags::dontwait)) return;
-    const auto* bytes = static_cast<const unsigned char*>(m.data());
-    if (m.more() || m.size() == 0 || bytes[0] > 1) {
-      // An XPUB peer may also send ordinary messages; they mean nothing here.
-      rejections_.reject(InputSocket::Subscriptions, "not a subscription message");
-      bool more = m.more();
-      while (more) {
-        zmq::message_t rest;
-        if (!frames_.recv(rest, zmq::recv_flags::dontwait)) break;
-        more = rest.more();
-      }
-      continue;
+    if (!frames_.recv(m, zmq::recv_flags::dontwait)) break;
+    bool more = m.more();
+    subscriptions_.onMessage(m.data(), m.size(), more);
+    while (more) {
+      zmq::message_t rest;
+      if (!frames_.recv(rest, zmq::recv_flags::dontwait)) break;
+      more = rest.more();
     }
-    if (bytes[0] == 1) {
-      counters_.subscriptions.fetch_add(1);
-    } else if (counters_.subscriptions.load() > 0) {
-      counters_.subscriptions.fetch_sub(1);
-    }
+    // At once, not after the batch: libzmq has filed every message read so far into its trie.
+    if (subscriptions_.overLimit()) dropSubscriptionHoarders();
   }
+  drainMonitors();
+}
+
+void NetLoop::dropSubscriptionHoarders() {
+  const auto now = std::chrono::steady_clock::now();
+  ConnectionMonitor& frames = *monitors_[0];
+  const int dropped = frames.dropPeersOver(kSubscriberAllowanceBytes, kSubscriberAllowanceBytesPerSecond);
+  if (dropped > 0) {
+    // A peer that reconnects and repeats its subscriptions (an XSUB does) is dropped each time.
+    if (const std::uint64_t n = hoarder_log_.note()) {
+      spdlog::warn("dropped {} frames peer(s) for sending refused subscriptions ({} bytes held at the latest)", n,
+                   subscriptions_.heldRefusedBytes());
+    }
+    escalate_after_ = now + kDropSettleTime;
+    return;
+  }
+  if (now < escalate_after_) return;  // the last drop's unsubscriptions are still on their way
+  // No peer stands out (the refused subscriptions came slowly, or from many peers): drop every frames
+  // peer; the subscribers reconnect by themselves within their reconnect interval.
+  if (hoarder_log_.note()) {
+    spdlog::warn("{} bytes of refused subscriptions held and no single sender: dropping all {} frames peers",
+                 subscriptions_.heldRefusedBytes(), frames.peers());
+  }
+  frames.dropAll();
+  subscriptions_.forgetRefused();
+  escalate_after_ = now + kDropSettleTime;
+}
+
+void NetLoop::drainMonitors() {
+  std::uint64_t dropped = 0;
+  std::uint64_t accept_failures = 0;
+  std::uint64_t handshake_failures = 0;
+  for (const auto& monitor : monitors_) {
+    monitor->drain();
+    dropped += monitor->dropped();
+    accept_failures += monitor->acceptFailures();
+    handshake_failures += monitor->handshakeFailures();
+  }
+  counters_.peers_dropped.store(dropped);
+  counters_.accept_failures.store(accept_failures);
+  counters_.handshake_failures.store(handshake_failures);
+  // A peer that subscribes twice is counted once: never more subscribers than connections (which an
+  // inproc endpoint does not report).
+  const std::int64_t subscribed = subscriptions_.subscribed();
+  counters_.subscriptions.store(frames_inproc_ ? subscribed
+                                               : std::min<std::int64_t>(subscribed, monitors_[0]->peers()));
+}
+
+curve::PeerRole NetLoop::roleOf(const zmq::message_t& message) const {
+  if (!curve_) return curve::PeerRole::Operator;
+  // With CURVE every connection passed the ZAP handler, which set the role; without one, the least.
+  return curve::roleOf(message).value_or(curve::PeerRole::Viewer);
 }
 
 void NetLoop::drainGaze() {
@@ -201,6 +266,9 @@ void NetLoop::drainGaze() {
     std::string reason;
     const zmq::message_t* payload = payloadOf(parts_, overflow, reason);
     if (payload != nullptr) reason = parseGazeSample(payload->data(), payload->size(), gaze_msg_);
+    if (payload != nullptr && reason.empty() && roleOf(*payload) != curve::PeerRole::Operator) {
+      reason = "gaze from a viewer key (operators only)";
+    }
     if (!reason.empty()) {
       rejections_.reject(InputSocket::Gaze, reason);
       continue;
@@ -267,6 +335,14 @@ void NetLoop::drainControl() {
     if (!reason.empty()) {
       rejections_.reject(InputSocket::Control, reason);
       replyError(request.identity, delimiter, request.control.request_id(), gsph::v1::ERROR_CODE_BAD_REQUEST, reason);
+      continue;
+    }
+    request.role = roleOf(payload);
+    if (request.role != curve::PeerRole::Operator && request.control.command_case() != gsph::v1::Control::kStatus) {
+      // Answered here: a forbidden request never reaches the simulation thread.
+      rejections_.reject(InputSocket::Control, "a viewer key asked for more than status");
+      replyError(request.identity, delimiter, request.control.request_id(), gsph::v1::ERROR_CODE_FORBIDDEN,
+                 "forbidden: a viewer key may only ask for status (operator keys may do more)");
       continue;
     }
     counters_.control_requests.fetch_add(1);

@@ -12,12 +12,18 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 #include <zmq.hpp>
 
+#include "net/connection_monitor.h"
+#include "net/curve_keys.h"
+#include "net/frame_subscriptions.h"
 #include "net/input_mailbox.h"
 #include "net/rejection_log.h"
 #include "net/socket_setup.h"
@@ -40,15 +46,28 @@ struct NetConfig {
   InputSocketType gaze_type = InputSocketType::Sub;
   InputSocketType pose_type = InputSocketType::Sub;
   int frame_hwm = kFrameSendHwm;
+  // CURVE on every socket (issue 17): the server's certificate, secret key included. The ZAP handler
+  // that judges client keys belongs to the context's owner (app::Server). None: plaintext, and every
+  // peer may do everything, as on a server that only loopback reaches.
+  std::optional<curve::Certificate> curve;
+  // Connections each bound socket takes at a time (connection_monitor.h); more are dropped as they
+  // come, so peers cannot use up the process's descriptors. `fd_limit` is quoted when accepting fails.
+  int max_peers = kDefaultMaxPeers;
+  int fd_limit = 0;
+  std::chrono::milliseconds log_interval{1000};  // refused connections and handshakes
 };
 
 struct NetCounters {
-  std::atomic<std::int64_t> subscriptions{0};  // current frame subscriptions (XPUB verboser)
+  // Frame subscribers: subscriptions to "" held, at most the connections the frames socket has.
+  std::atomic<std::int64_t> subscriptions{0};
   std::atomic<std::uint64_t> frames_sent{0};
   std::atomic<std::uint64_t> gaze_samples{0};   // usable samples received
   std::atomic<std::uint64_t> gaze_no_point{0};  // valid = false or lost: the last point ages
   std::atomic<std::uint64_t> poses{0};
   std::atomic<std::uint64_t> control_requests{0};
+  std::atomic<std::uint64_t> peers_dropped{0};       // over a socket's limit, or holding refused subscriptions
+  std::atomic<std::uint64_t> accept_failures{0};     // accept(2) failed (EMFILE: no descriptors left)
+  std::atomic<std::uint64_t> handshake_failures{0};  // no CURVE, a refused key, not ZeroMQ
 };
 
 class NetLoop {
@@ -79,6 +98,10 @@ class NetLoop {
   void forwardReplies();
   void replyError(const std::string& identity, bool delimiter, std::uint64_t request_id, gsph::v1::ErrorCode code,
                   const std::string& error);
+  void drainMonitors();
+  void dropSubscriptionHoarders();
+  // The role of the peer `message` came from: its key's role with CURVE, else operator.
+  curve::PeerRole roleOf(const zmq::message_t& message) const;
 
   InputMailbox& mailbox_;
   RejectionLog& rejections_;
@@ -92,6 +115,13 @@ class NetLoop {
   zmq::socket_t control_;
   zmq::socket_t frame_pipe_;
   zmq::socket_t reply_pipe_;
+  // Declared after the sockets they watch, so they stop before those sockets close.
+  std::vector<std::unique_ptr<ConnectionMonitor>> monitors_;  // frames, gaze, pose, control
+  FrameSubscriptions subscriptions_;
+  bool curve_ = false;
+  bool frames_inproc_ = false;
+  std::chrono::steady_clock::time_point escalate_after_{};
+  LogThrottle hoarder_log_;
   std::vector<zmq::message_t> parts_;  // scratch for multipart receives
   gsph::v1::GazeSample gaze_msg_;
   gsph::v1::CameraPose pose_msg_;

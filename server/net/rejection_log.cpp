@@ -18,16 +18,16 @@ const char* inputSocketName(InputSocket s) {
   return "?";
 }
 
+RejectionLog::RejectionLog(std::chrono::milliseconds interval)
+    : throttles_{LogThrottle(interval), LogThrottle(interval), LogThrottle(interval), LogThrottle(interval)} {}
+
 void RejectionLog::reject(InputSocket socket, const std::string& reason) {
   const int i = static_cast<int>(socket);
   counts_[i].fetch_add(1, std::memory_order_relaxed);
-  ++unreported_[i];
-  const auto now = std::chrono::steady_clock::now();
-  if (now - last_logged_[i] < interval_) return;
-  spdlog::warn("rejected {} input on the {} socket (latest: {}; {} rejected in all)", unreported_[i],
-               inputSocketName(socket), reason, count(socket));
-  last_logged_[i] = now;
-  unreported_[i] = 0;
+  if (const std::uint64_t n = throttles_[i].note()) {
+    spdlog::warn("rejected {} input on the {} socket (latest: {}; {} rejected in all)", n, inputSocketName(socket),
+                 reason, count(socket));
+  }
 }
 
 std::uint64_t RejectionLog::total() const {

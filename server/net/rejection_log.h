@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string>
 
+#include "net/log_throttle.h"
+
 namespace net {
 
 enum class InputSocket { Gaze = 0, Pose = 1, Control = 2, Subscriptions = 3 };
@@ -16,9 +18,10 @@ const char* inputSocketName(InputSocket s);
 
 class RejectionLog {
  public:
-  explicit RejectionLog(std::chrono::milliseconds interval = std::chrono::seconds(1)) : interval_(interval) {}
+  explicit RejectionLog(std::chrono::milliseconds interval = std::chrono::seconds(1));
 
-  // Called by the network thread only; the counters may be read from any thread.
+  // Called by the network thread only; the counters may be read from any thread. `reason` is ours,
+  // or peer text already passed through echoText (peer_text.h).
   void reject(InputSocket socket, const std::string& reason);
 
   std::uint64_t total() const;
@@ -27,11 +30,8 @@ class RejectionLog {
   }
 
  private:
-  std::chrono::milliseconds interval_;
   std::array<std::atomic<std::uint64_t>, kInputSocketCount> counts_{};
-  // Network-thread state: when each socket last logged and how many it has not reported since.
-  std::array<std::chrono::steady_clock::time_point, kInputSocketCount> last_logged_{};
-  std::array<std::uint64_t, kInputSocketCount> unreported_{};
+  std::array<LogThrottle, kInputSocketCount> throttles_;  // network-thread state
 };
 
 }  // namespace net

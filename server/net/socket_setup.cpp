@@ -8,6 +8,7 @@ void applyCommonOptions(zmq::socket_t& socket) {
   socket.set(zmq::sockopt::linger, 0);
   socket.set(zmq::sockopt::heartbeat_ivl, kHeartbeatIntervalMs);
   socket.set(zmq::sockopt::heartbeat_timeout, kHeartbeatTimeoutMs);
+  socket.set(zmq::sockopt::handshake_ivl, kHandshakeTimeoutMs);
 }
 
 void applyInputOptions(zmq::socket_t& socket, int max_bytes) {

@@ -17,8 +17,14 @@ inline constexpr int kFrameSendHwm = 4;
 inline constexpr int kInputReceiveHwm = 1000;
 inline constexpr int kHeartbeatIntervalMs = 1000;
 inline constexpr int kHeartbeatTimeoutMs = 3000;
+// A connection that has not finished its ZMTP (or CURVE) handshake by then is dropped: a peer that
+// connects and says nothing holds a descriptor this long at most (libzmq's default is 30 s).
+inline constexpr int kHandshakeTimeoutMs = 10000;
+// Connections per bound socket unless the descriptor limit asks for fewer (fd_limit.h).
+inline constexpr int kDefaultMaxPeers = 256;
 
-// Options common to every socket: heartbeats and linger 0 (nothing left unsent may delay exit).
+// Options common to every socket: heartbeats, the handshake timeout and linger 0 (nothing left
+// unsent may delay exit).
 void applyCommonOptions(zmq::socket_t& socket);
 // An input socket: size cap and receive high-water mark.
 void applyInputOptions(zmq::socket_t& socket, int max_bytes = kMaxInputBytes);

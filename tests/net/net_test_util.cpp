@@ -1,8 +1,23 @@
 #include "net_test_util.h"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+
 #include "net/frame_encoder.h"
 
 namespace net_test {
+
+int idleTcpConnection(const std::string& endpoint) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) return -1;
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(std::stoi(endpoint.substr(endpoint.rfind(':') + 1))));
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  (void)::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr);
+  return fd;
+}
 
 std::vector<Eigen::Vector2d> smallOnScreen(const gsph::v1::Frame& frame, const sph::ScreenCamera& camera) {
   const std::vector<float> xyz = net::decodePositions(frame);

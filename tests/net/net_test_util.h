@@ -16,6 +16,7 @@
 #include <zmq.hpp>
 
 #include "app/server.h"
+#include "net/curve_sockets.h"
 #include "proto/sph.pb.h"
 #include "sph/camera.h"
 
@@ -50,11 +51,19 @@ inline std::int64_t nowUs() {
       .count();
 }
 
+// A client's CURVE keys (none: plaintext), set on a socket before it connects.
+using Keys = std::optional<curve::ClientKeys>;
+inline void applyKeys(zmq::socket_t& socket, const Keys& keys) {
+  if (keys) curve::makeCurveClient(socket, *keys);
+}
+
 class FrameSubscriber {
  public:
-  FrameSubscriber(zmq::context_t& ctx, const std::string& endpoint, bool conflate = false, int receive_hwm = 0)
+  FrameSubscriber(zmq::context_t& ctx, const std::string& endpoint, bool conflate = false, int receive_hwm = 0,
+                  const Keys& keys = std::nullopt)
       : socket_(ctx, zmq::socket_type::sub) {
     socket_.set(zmq::sockopt::linger, 0);
+    applyKeys(socket_, keys);
     if (receive_hwm > 0) socket_.set(zmq::sockopt::rcvhwm, receive_hwm);
     if (receive_hwm > 0) socket_.set(zmq::sockopt::rcvbuf, 4096);
     if (conflate) socket_.set(zmq::sockopt::conflate, 1);
@@ -93,8 +102,10 @@ class FrameSubscriber {
 
 class ControlClient {
  public:
-  ControlClient(zmq::context_t& ctx, const std::string& endpoint) : socket_(ctx, zmq::socket_type::dealer) {
+  ControlClient(zmq::context_t& ctx, const std::string& endpoint, const Keys& keys = std::nullopt)
+      : socket_(ctx, zmq::socket_type::dealer) {
     socket_.set(zmq::sockopt::linger, 0);
+    applyKeys(socket_, keys);
     socket_.connect(endpoint);
   }
   std::optional<gsph::v1::ControlReply> send(gsph::v1::Control request) {
@@ -104,10 +115,12 @@ class ControlClient {
   }
   // Sends `bytes` and returns the first reply, or with `request_id`, the first reply to that id
   // (a late reply to an earlier request that timed out is skipped, not taken for this one's).
+  // `wait`: how long to wait for the reply (a test that expects none waits less than kTimeout).
   std::optional<gsph::v1::ControlReply> sendRaw(const std::string& bytes,
-                                                std::optional<std::uint64_t> request_id = std::nullopt) {
+                                                std::optional<std::uint64_t> request_id = std::nullopt,
+                                                std::chrono::milliseconds wait = kTimeout) {
     socket_.send(zmq::buffer(bytes), zmq::send_flags::none);
-    const auto end = std::chrono::steady_clock::now() + kTimeout;
+    const auto end = std::chrono::steady_clock::now() + wait;
     for (;;) {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
       zmq::pollitem_t item{socket_.handle(), 0, ZMQ_POLLIN, 0};
@@ -119,6 +132,18 @@ class ControlClient {
       if (!request_id || reply.request_id() == *request_id) return reply;
     }
   }
+  // Sends `request` again every 200 ms until one is answered (the server may drop a connection, and
+  // the request queued on it with it), or returns nothing after kTimeout.
+  std::optional<gsph::v1::ControlReply> sendUntilAnswered(const gsph::v1::Control& request) {
+    const auto end = std::chrono::steady_clock::now() + kTimeout;
+    while (std::chrono::steady_clock::now() < end) {
+      gsph::v1::Control copy = request;
+      copy.set_request_id(++last_id_);
+      copy.set_protocol_version(gsph::v1::PROTOCOL_VERSION_CURRENT);
+      if (auto reply = sendRaw(copy.SerializeAsString(), last_id_, std::chrono::milliseconds(200))) return reply;
+    }
+    return std::nullopt;
+  }
   std::uint64_t lastId() const { return last_id_; }
 
  private:
@@ -129,8 +154,10 @@ class ControlClient {
 // PUB connected to a server's SUB input (gaze or camera pose).
 class Publisher {
  public:
-  Publisher(zmq::context_t& ctx, const std::string& endpoint) : socket_(ctx, zmq::socket_type::pub) {
+  Publisher(zmq::context_t& ctx, const std::string& endpoint, const Keys& keys = std::nullopt)
+      : socket_(ctx, zmq::socket_type::pub) {
     socket_.set(zmq::sockopt::linger, 0);
+    applyKeys(socket_, keys);
     socket_.connect(endpoint);
   }
   void send(const google::protobuf::MessageLite& m) { sendBytes(m.SerializeAsString()); }
@@ -166,6 +193,10 @@ inline double maxAbsDiff(const Eigen::Matrix4d& a, const Eigen::Matrix4d& b) {
   for (int i = 0; i < 16; ++i) d = std::max(d, std::abs(a(i % 4, i / 4) - b(i % 4, i / 4)));
   return d;
 }
+
+// A plain TCP connection to a tcp://127.0.0.1:PORT endpoint that sends nothing (a peer that never
+// speaks ZMTP); -1 when this process has no descriptor left. The caller closes it.
+int idleTcpConnection(const std::string& endpoint);
 
 // Screen positions (normalized, origin top left) of the SMALL particles of a frame under `camera`.
 std::vector<Eigen::Vector2d> smallOnScreen(const gsph::v1::Frame& frame, const sph::ScreenCamera& camera);

@@ -1,10 +1,7 @@
 // Misbehaving peers: a flood of garbage, truncated, oversized and malformed messages on every input
 // socket, a raw TCP peer that never speaks ZMTP, and a subscriber that stops reading. The server must
 // keep stepping and keep serving the well-behaved clients.
-#include <arpa/inet.h>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <random>
@@ -18,19 +15,11 @@ using net_test::ControlClient;
 using net_test::FrameSubscriber;
 using net_test::Publisher;
 
-int portOf(const std::string& endpoint) { return std::stoi(endpoint.substr(endpoint.rfind(':') + 1)); }
-
 // A TCP peer that connects, writes junk that is not a ZMTP greeting, and then just sits there.
 int rawJunkConnection(const std::string& endpoint) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(portOf(endpoint)));
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0) {
-    const char junk[] = "GET / HTTP/1.1\r\n\r\n\xff\x00\x01";
-    (void)::write(fd, junk, sizeof junk);
-  }
+  const int fd = net_test::idleTcpConnection(endpoint);
+  const char junk[] = "GET / HTTP/1.1\r\n\r\n\xff\x00\x01";
+  if (fd >= 0) (void)::write(fd, junk, sizeof junk);
   return fd;
 }
 

@@ -26,7 +26,8 @@ bool eventually(Predicate predicate) {
 }
 
 viewer::Endpoints endpointsOf(const viewer_test::TestServer& server) {
-  return {server.framesEndpoint(), server.gazeEndpoint(), server.poseEndpoint(), server.controlEndpoint()};
+  return {server.framesEndpoint(), server.gazeEndpoint(), server.poseEndpoint(), server.controlEndpoint(),
+          std::nullopt};
 }
 }  // namespace
 
