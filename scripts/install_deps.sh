@@ -9,7 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libmsgpack-cxx-dev
   libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth libxtst-dev
-  gnuplot-nox python3-zmq python3-protobuf
+  gnuplot-nox python3-zmq python3-protobuf python3-numpy
 )
 missing=()
 for p in "${packages[@]}"; do
