@@ -56,8 +56,7 @@ BenchPlan planBench(const BenchRequest& request) {
             throw std::invalid_argument("scene '" + sc.name + "' names no gaze_recording for method '" + method +
                                         "': pass --gaze FILE");
           }
-          plan.recordings.push_back(
-              std::make_unique<gaze::GazeRecording>(gaze::readGazeRecording(sc.gaze_recording)));
+          plan.recordings.push_back(std::make_unique<gaze::GazeRecording>(gaze::readGazeRecording(sc.gaze_recording)));
           gaze = scene_gaze[sc.name] = plan.recordings.back().get();
         }
       }

@@ -27,7 +27,7 @@ struct BenchRequest {
   std::string gaze_path;            // a recording for gaze and hybrid instead of the scenes' own
   std::string out_dir = "bench_out";
   std::string scene_dir;
-  int frames = 0;   // 0: each scene's own count
+  int frames = 0;  // 0: each scene's own count
   int threads = 2;
   int interleave = 10;  // frames per turn; 0: each method start to end, one after another
   int export_every = 0;
@@ -44,8 +44,8 @@ struct PlannedRun {
 
 struct BenchPlan {
   std::vector<sph::Scene> scenes;
-  std::vector<std::vector<PlannedRun>> runs;  // per scene, in the order of `scenes`
-  bool matrix = false;                        // more than one run: a folder per scene and method
+  std::vector<std::vector<PlannedRun>> runs;                     // per scene, in the order of `scenes`
+  bool matrix = false;                                           // more than one run: a folder per scene and method
   std::vector<std::unique_ptr<gaze::GazeRecording>> recordings;  // what the runs' gaze points to
 };
 
