@@ -15,7 +15,8 @@ built=$(date +%s)
 
 artifacts="$PWD/build-fuzz/artifacts"
 mkdir -p "$artifacts"
-scratch=$(mktemp -d)
+# In memory where there is /dev/shm: the gaze-recording target writes a file per input.
+scratch=$(mktemp -d -p /dev/shm 2>/dev/null || mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 failed=()
 summary=()
