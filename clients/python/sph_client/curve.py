@@ -27,17 +27,18 @@ class ClientKeys:
     server_public: bytes
 
 
-def load_client_keys(curve_secret: str, curve_server: str) -> ClientKeys:
+def _read_certificate(path: str, what: str) -> tuple:
     try:
-        public, secret = zmq.auth.load_certificate(curve_secret)
+        return zmq.auth.load_certificate(path)
     except (OSError, ValueError) as error:
-        raise CurveConfigError(f"curve_secret {curve_secret}: {error}") from error
+        raise CurveConfigError(f"{what} {path}: {error}") from error
+
+
+def load_client_keys(curve_secret: str, curve_server: str) -> ClientKeys:
+    public, secret = _read_certificate(curve_secret, "curve_secret")
     if not secret:
         raise CurveConfigError(f"curve_secret {curve_secret} holds no secret key (give the .key_secret file)")
-    try:
-        server_public, _ = zmq.auth.load_certificate(curve_server)
-    except (OSError, ValueError) as error:
-        raise CurveConfigError(f"curve_server {curve_server}: {error}") from error
+    server_public, _ = _read_certificate(curve_server, "curve_server")
     if not server_public:
         raise CurveConfigError(f"curve_server {curve_server} holds no public key")
     return ClientKeys(public, secret, server_public)

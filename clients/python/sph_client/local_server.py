@@ -36,9 +36,10 @@ class LocalServer:
         log_path: str,
         binary: Optional[Path] = None,
         start_timeout_s: float = 30.0,
+        status_interval_s: float = 0.0,
     ):
         binary = binary or default_server_binary()
-        args = [str(binary), "--scene", scene, "--status-interval", "0"]
+        args = [str(binary), "--scene", scene, "--status-interval", f"{status_interval_s:g}"]
         for name in ("frames", "gaze", "pose", "control"):
             args += [f"--{name}-endpoint", "tcp://127.0.0.1:*"]
         if method:

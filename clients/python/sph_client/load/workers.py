@@ -10,7 +10,7 @@ import math
 import threading
 import time
 from dataclasses import dataclass
-from typing import Optional
+from typing import Iterator, Optional
 
 import numpy as np
 import zmq
@@ -22,7 +22,7 @@ from ..frames import FrameSubscriber, decode_frame
 from ..proto import pb
 from ..publishers import GazePublisher, PosePublisher
 from .records import GazeRegistry, PhaseRecord, RunClock, SceneInfo, SubscriberRecord, ThreadCpu
-from .scenario import Scenario, verb_arguments
+from .scenario import Phase, Scenario, verb_arguments
 
 POLL_S = 0.1  # how long a worker waits before looking at the clock and the stop flag again
 
@@ -58,8 +58,13 @@ class Worker(threading.Thread):
         self.stop_event = shared.stop
         self.error: Optional[BaseException] = None
 
-    def phase(self) -> Optional[int]:
-        return self.shared.clock.phase_at()
+    def phases(self) -> Iterator[tuple[int, Phase]]:
+        """(index, config) of the current phase, again and again, until the run is over or stopped."""
+        while not self.stop_event.is_set():
+            phase = self.shared.clock.phase_at()
+            if phase is None:
+                return
+            yield phase, self.scenario.phases[phase]
 
     def socket_options(self) -> dict:
         security = self.shared.security
@@ -117,11 +122,8 @@ class SubscriberWorker(Worker):
         last_seen: dict = {}
         last_sequence: Optional[int] = None
         try:
-            while not self.stop_event.is_set():
-                phase = self.phase()
-                if phase is None:
-                    break
-                active = self.index < self.scenario.phases[phase].subscribers
+            for phase, config in self.phases():
+                active = self.index < config.subscribers
                 if active and subscriber is None:
                     # A deep receive queue: when frames are lost, the server dropped them, not us.
                     subscriber = FrameSubscriber(self.endpoint, rcvhwm=1000, **self.socket_options())
@@ -203,11 +205,7 @@ class GazeWorker(Worker):
         patterns: dict = {}
         ticker = Ticker()
         try:
-            while not self.stop_event.is_set():
-                phase = self.phase()
-                if phase is None:
-                    break
-                config = self.scenario.phases[phase]
+            for phase, config in self.phases():
                 if self.index >= config.gaze_publishers:
                     ticker.reset()
                     self.stop_event.wait(POLL_S)
@@ -242,11 +240,8 @@ class PoseWorker(Worker):
         ticker = Ticker()
         box = None
         try:
-            while not self.stop_event.is_set():
-                phase = self.phase()
-                if phase is None:
-                    break
-                rate = self.scenario.phases[phase].pose_hz
+            for phase, config in self.phases():
+                rate = config.pose_hz
                 if rate <= 0:
                     ticker.reset()
                     self.stop_event.wait(POLL_S)
@@ -285,11 +280,7 @@ class ControlWorker(Worker):
         rate = 0.0
         turn = 0
         try:
-            while not self.stop_event.is_set():
-                phase = self.phase()
-                if phase is None:
-                    break
-                config = self.scenario.phases[phase]
+            for phase, config in self.phases():
                 now = time.monotonic()
                 wait = POLL_S
                 if config.control_hz > 0:
