@@ -6,10 +6,10 @@ import tempfile
 import unittest
 
 from sph_client import gaze_patterns
-from sph_client.load.records import PhaseRecord, SubscriberRecord
+from sph_client.load.records import PhaseRecord, SentTimes, SubscriberRecord
 from sph_client.load.report import merge, summarize
 from sph_client.load.scenario import ScenarioError, load_scenario, scenario_from_dict, single_phase
-from sph_client.load.stats import distribution, percentile, step_rate
+from sph_client.load.stats import Samples, distribution, percentile, step_rate
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -88,10 +88,32 @@ class Statistics(unittest.TestCase):
         self.assertIsNone(step_rate([(0, 5)]))
 
 
+class BoundedMemory(unittest.TestCase):
+    def test_samples_keep_exact_extremes_and_close_percentiles_past_their_capacity(self):
+        samples = Samples(capacity=1000)
+        for v in range(100_000):
+            samples.append(float(v))
+        self.assertEqual(len(samples.reservoir), 1000)
+        d = distribution(samples)
+        self.assertEqual((d["count"], d["min"], d["max"]), (100_000, 0.0, 99_999.0))
+        self.assertAlmostEqual(d["p50"], 50_000, delta=5_000)
+        self.assertGreater(d["p99"], 95_000)
+
+    def test_sent_times_forget_the_oldest(self):
+        times = SentTimes(keep=4)
+        for sequence in range(1, 11):
+            times.append(sequence * 100)
+        self.assertEqual(times.get(10), 1000)
+        self.assertEqual(times.get(7), 700)
+        self.assertIsNone(times.get(6))
+        self.assertIsNone(times.get(11))
+        self.assertIsNone(times.get(0))
+
+
 class Summary(unittest.TestCase):
     def test_a_silent_subscriber_still_shows(self):
         record = PhaseRecord()
-        record.subscribers[0] = SubscriberRecord(frames=10, gaps=1, missed=2, lag_ms=[1.0, 2.0])
+        record.subscribers[0] = SubscriberRecord(frames=10, gaps=1, missed=2, lag_ms=Samples([1.0, 2.0]))
         s = summarize(record, 2.0, subscribers=3, gaze_publishers=1)
         self.assertEqual([x["frames"] for x in s["subscribers"]], [10, 0, 0])
         self.assertFalse(s["subscriber_totals"]["every_subscriber_received_frames"])
@@ -104,11 +126,12 @@ class Summary(unittest.TestCase):
         a.subscribers[0] = SubscriberRecord(frames=5)
         b.subscribers[0] = SubscriberRecord(frames=7)
         a.gaze_sent[0], b.gaze_sent[0] = 10, 20
-        a.control_rtt_ms, b.control_rtt_ms = [1.0], [2.0]
+        a.control_rtt_ms, b.control_rtt_ms = Samples([1.0]), Samples([2.0, 3.0])
         total = merge([a, b])
         self.assertEqual(total.subscribers[0].frames, 12)
         self.assertEqual(total.gaze_sent[0], 30)
-        self.assertEqual(total.control_rtt_ms, [1.0, 2.0])
+        self.assertEqual(sorted(total.control_rtt_ms.reservoir), [1.0, 2.0, 3.0])
+        self.assertEqual(distribution(total.control_rtt_ms)["max"], 3.0)
 
 
 class GazePatterns(unittest.TestCase):

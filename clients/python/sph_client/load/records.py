@@ -1,6 +1,6 @@
 """What sph_load observes, phase by phase. Each field has one writer thread (a subscriber writes
-its own record, subscriber 0 the server's), or is a list that several threads only append to (an
-atomic operation under the GIL), so no locks are needed on the hot paths."""
+its own record, subscriber 0 the server's), or is a Samples that locks its own appends, so the
+records need no lock of their own. Memory stays bounded however long the run (stats.Samples)."""
 
 from __future__ import annotations
 
@@ -9,6 +9,8 @@ import threading
 import time
 from dataclasses import dataclass, field
 from typing import Optional
+
+from .stats import Samples, StepRate
 
 
 @dataclass
@@ -19,17 +21,17 @@ class SubscriberRecord:
     restarts: int = 0
     bytes: int = 0
     rejected: int = 0
-    lag_ms: list = field(default_factory=list)  # receive wall time - Frame.send_time_us
+    lag_ms: Samples = field(default_factory=Samples)  # receive wall time - Frame.send_time_us
 
 
 @dataclass
 class ServerRecord:
     """Seen by the lowest-numbered subscriber: the server's state over the phase."""
 
-    observations: list = field(default_factory=list)  # (send_time_us, step)
-    total_ms: list = field(default_factory=list)
-    reported_steps_per_second: list = field(default_factory=list)
-    particles: list = field(default_factory=list)
+    steps: StepRate = field(default_factory=StepRate)
+    total_ms: Samples = field(default_factory=Samples)
+    reported_steps_per_second: Samples = field(default_factory=Samples)
+    particles: Samples = field(default_factory=Samples)
     gaze_modes: collections.Counter = field(default_factory=collections.Counter)
 
 
@@ -38,14 +40,14 @@ class PhaseRecord:
     subscribers: dict = field(default_factory=dict)  # index -> SubscriberRecord
     gaze_sent: dict = field(default_factory=dict)  # publisher index -> samples
     gaze_late: dict = field(default_factory=dict)  # publisher index -> ticks skipped to catch up
-    gaze_latency_ms: list = field(default_factory=list)  # one per (subscriber, echoed sample)
+    gaze_latency_ms: Samples = field(default_factory=Samples)  # one per (subscriber, echoed sample)
     pose_sent: int = 0
     pose_late: int = 0
     control_sent: int = 0
     control_replied: int = 0
     control_refused: int = 0  # ok = false
     control_timeouts: int = 0
-    control_rtt_ms: list = field(default_factory=list)
+    control_rtt_ms: Samples = field(default_factory=Samples)
     server: ServerRecord = field(default_factory=ServerRecord)
 
 
@@ -72,22 +74,40 @@ class RunClock:
         return None
 
 
+class SentTimes:
+    """Send times of one publisher's samples, sequence 1, 2, ...; only the newest `keep` are kept
+    (a frame echoes a sample a few steps old: the server holds a sample at most gaze_hold_s)."""
+
+    def __init__(self, keep: int = 1 << 16):
+        self._times: collections.deque = collections.deque(maxlen=keep)
+        self._appended = 0
+        self._lock = threading.Lock()
+
+    def append(self, sent_ns: int) -> None:
+        with self._lock:
+            self._times.append(sent_ns)
+            self._appended += 1
+
+    def get(self, sequence: int) -> Optional[int]:
+        with self._lock:
+            index = sequence - 1 - (self._appended - len(self._times))
+            return self._times[index] if 0 <= index < len(self._times) else None
+
+
 class GazeRegistry:
-    """Send times of our own gaze samples, by source_id and sequence (sequence k at index k - 1),
-    so a frame that echoes a sample can be matched to the moment it left."""
+    """Send times of our own gaze samples by source_id and sequence, so a frame that echoes a
+    sample can be matched to the moment it left."""
 
     def __init__(self):
         self.sent: dict = {}
 
-    def add_source(self, source_id: str) -> list:
-        self.sent[source_id] = []
+    def add_source(self, source_id: str) -> SentTimes:
+        self.sent[source_id] = SentTimes()
         return self.sent[source_id]
 
     def sent_ns(self, source_id: str, sequence: int) -> Optional[int]:
         times = self.sent.get(source_id)
-        if times is None or not 1 <= sequence <= len(times):
-            return None
-        return times[sequence - 1]
+        return None if times is None else times.get(sequence)
 
 
 class SceneInfo:

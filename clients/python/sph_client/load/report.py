@@ -7,7 +7,7 @@ from dataclasses import asdict
 
 from .records import PhaseRecord, ServerRecord, SubscriberRecord
 from .scenario import Phase
-from .stats import distribution, fmt_ms, step_rate
+from .stats import distribution, fmt_ms
 
 FORMAT = 1
 
@@ -20,22 +20,22 @@ def merge(records: list) -> PhaseRecord:
             t = total.subscribers.setdefault(i, SubscriberRecord())
             for name in ("frames", "gaps", "missed", "restarts", "bytes", "rejected"):
                 setattr(t, name, getattr(t, name) + getattr(s, name))
-            t.lag_ms.extend(s.lag_ms)
         for name in ("gaze_sent", "gaze_late"):
             merged = getattr(total, name)
             for i, n in getattr(r, name).items():
                 merged[i] = merged.get(i, 0) + n
-        total.gaze_latency_ms.extend(r.gaze_latency_ms)
-        total.control_rtt_ms.extend(r.control_rtt_ms)
         for name in ("pose_sent", "pose_late", "control_sent", "control_replied", "control_refused",
                      "control_timeouts"):
             setattr(total, name, getattr(total, name) + getattr(r, name))
-        server: ServerRecord = total.server
-        server.observations.extend(r.server.observations)
-        server.total_ms.extend(r.server.total_ms)
-        server.reported_steps_per_second.extend(r.server.reported_steps_per_second)
-        server.particles.extend(r.server.particles)
-        server.gaze_modes.update(r.server.gaze_modes)
+        total.server.gaze_modes.update(r.server.gaze_modes)
+    for i, t in total.subscribers.items():
+        t.lag_ms = t.lag_ms.merged([r.subscribers[i].lag_ms for r in records if i in r.subscribers])
+    total.gaze_latency_ms = total.gaze_latency_ms.merged([r.gaze_latency_ms for r in records])
+    total.control_rtt_ms = total.control_rtt_ms.merged([r.control_rtt_ms for r in records])
+    server: ServerRecord = total.server
+    server.steps = server.steps.merged([r.server.steps for r in records])
+    for name in ("total_ms", "reported_steps_per_second", "particles"):
+        setattr(server, name, getattr(server, name).merged([getattr(r.server, name) for r in records]))
     return total
 
 
@@ -91,8 +91,8 @@ def summarize(record: PhaseRecord, duration_s: float, subscribers: int, gaze_pub
             "rtt_ms": distribution(record.control_rtt_ms),
         },
         "server": {
-            "frames_observed": len(record.server.observations),
-            "step_rate": step_rate(record.server.observations),
+            "frames_observed": record.server.steps.frames,
+            "step_rate": record.server.steps.rate,
             "reported_steps_per_second": distribution(record.server.reported_steps_per_second),
             "step_total_ms": distribution(record.server.total_ms),
             "particles": distribution(record.server.particles),

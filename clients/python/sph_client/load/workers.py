@@ -182,7 +182,7 @@ class SubscriberWorker(Worker):
 
     def _server(self, message, record: PhaseRecord) -> None:
         server = record.server
-        server.observations.append((message.send_time_us, message.step))
+        server.steps.add(message.send_time_us, message.step)
         server.total_ms.append(message.timings.total_ms)
         server.reported_steps_per_second.append(message.steps_per_second)
         server.particles.append(message.particle_count)
