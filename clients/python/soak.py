@@ -223,7 +223,10 @@ def main(argv=None) -> int:
         "worst_outside_m": checker.worst_outside_m, "frames_without_box": checker.no_box_frames,
         "particles": distribution(checker.particles),
         "rss_kib": {"after_warmup": baseline, "end": end_rss, "peak": peak, "growth_percent": growth,
-                    "samples": len(memory.samples)},
+                    "samples": len(memory.samples),
+                    # the median of each minute: growth that levels off and growth that keeps on
+                    # look alike in two numbers, not in ten
+                    "by_minute": [memory.median_between(60.0 * m, 60.0 * (m + 1)) for m in range(int(elapsed // 60))]},
         "step_total_ms": distribution(steps), "slowest_steps": [
             {"sim_time": s, "step": n, "total_ms": ms} for s, n, ms in slowest],
         "slowest_over_median": (max(steps) / median_ms) if steps and median_ms else None,
@@ -264,6 +267,8 @@ def print_report(f: dict) -> None:
     growth = "-" if rss["growth_percent"] is None else f"{rss['growth_percent']:+.2f} %"
     print(f"  server RSS: {rss['after_warmup']} KiB after {f['warmup_s']:.0f} s, {rss['end']} KiB at the end "
           f"({growth}), peak {rss['peak']} KiB")
+    if rss["by_minute"]:
+        print(f"  server RSS by minute (median KiB): {' '.join(f'{v:.0f}' for v in rss['by_minute'] if v is not None)}")
     ratio = "-" if f["slowest_over_median"] is None else f"{f['slowest_over_median']:.2f}"
     print(f"  step total_ms median {ms(st['p50'])}, p99 {ms(st['p99'])}, max {ms(st['max'])} ({ratio}x the median); "
           f"slowest at sim times {[round(s['sim_time'], 2) for s in f['slowest_steps']]}")

@@ -25,6 +25,7 @@ from .records import GazeRegistry, PhaseRecord, RunClock, SceneInfo, SubscriberR
 from .scenario import Phase, Scenario, verb_arguments
 
 POLL_S = 0.1  # how long a worker waits before looking at the clock and the stop flag again
+BOX_WAIT_S = 5.0  # how long the pose publisher waits for a frame to tell it the container
 
 
 @dataclass
@@ -247,7 +248,11 @@ class PoseWorker(Worker):
                     self.stop_event.wait(POLL_S)
                     continue
                 if box is None:
-                    box = self.shared.scene.wait_box(POLL_S)  # the first frame tells where the container is
+                    # The first frame tells where the container is; a phase with no subscriber
+                    # never learns it, and then a 1 m cube at the origin stands in.
+                    box = self.shared.scene.wait_box(POLL_S)
+                    if box is None and time.monotonic() - self.shared.clock.start > BOX_WAIT_S:
+                        box = (np.zeros(3), np.ones(3))
                     continue
                 due, skipped = ticker.wait(rate, self.stop_event)
                 record = self.records[phase]
