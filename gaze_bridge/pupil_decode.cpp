@@ -46,7 +46,9 @@ bool decodeEntry(const msgpack::object& entry, std::int64_t arrival_ns, TrackerS
   if (norm_pos == nullptr || norm_pos->type != msgpack::type::ARRAY || norm_pos->via.array.size != 2) return false;
   double nx = 0.0, ny = 0.0, confidence = 0.0, timestamp = 0.0;
   if (!asNumber(&norm_pos->via.array.ptr[0], nx) || !asNumber(&norm_pos->via.array.ptr[1], ny)) return false;
-  if (!asNumber(lookup(entry, "confidence"), confidence)) return false;
+  // Pupil's confidence lies in [0, 1]; outside it the entry is malformed, and a value beyond float's
+  // range would make the cast below undefined behaviour (found by tests/fuzz/fuzz_pupil_decode).
+  if (!asNumber(lookup(entry, "confidence"), confidence) || confidence < 0.0 || confidence > 1.0) return false;
   if (!asNumber(lookup(entry, "timestamp"), timestamp)) return false;
   const msgpack::object* on_surf = lookup(entry, "on_surf");
   // on_surf may be missing in old Capture versions: then the position decides.

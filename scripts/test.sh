@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, checks the formatting, builds (Release,
 # -Werror), runs every tier, then the unit tier again on the scalar forms of the vector loops
-# (SPH_SIMD=scalar; on a CPU without AVX-512 the first run already was).
+# (SPH_SIMD=scalar; on a CPU without AVX-512 the first run already was), then the fuzz targets.
 # SPH_SANITIZE=1 also builds build-asan/ with AddressSanitizer + UndefinedBehaviorSanitizer and runs
 # every tier but the scenario tier there (the AVX-512 forms included, where the CPU has them).
 set -euo pipefail
@@ -11,6 +11,9 @@ bash scripts/check_format.sh
 bash scripts/build.sh -DSPH_WERROR=ON
 ctest --test-dir build --output-on-failure -j 2
 SPH_SIMD=scalar ctest --test-dir build --output-on-failure -j 2 -L unit
+# The libFuzzer targets (tests/fuzz/README.md): build-fuzz/ with clang, each target for 20 s from a
+# copy of its seed corpus; any finding fails the test command.
+bash scripts/run_fuzz.sh
 if [ "${SPH_SANITIZE:-0}" = "1" ]; then
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPH_SANITIZE=ON -DSPH_WERROR=ON
   cmake --build build-asan -j "$(nproc)"

@@ -239,7 +239,9 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and also out_of_range for a number too large for a double (e.g. 1e999): found by
+    // tests/fuzz/fuzz_scene_loader, since it escaped as a non-SceneError.
     throw SceneError(source + ": not valid JSON: " + e.what());
   }
   ctx.allowOnly(doc, "",

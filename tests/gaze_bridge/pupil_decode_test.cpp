@@ -105,3 +105,21 @@ TEST(PupilDecode, TruncatedPayloadIsRejected) {
   }
   EXPECT_TRUE(out.empty());
 }
+
+TEST(PupilDecode, ConfidenceOutsideZeroToOneSkipsTheEntry) {
+  // Found by tests/fuzz/fuzz_pupil_decode: a confidence of -2.9e238 passed as finite, then its cast to
+  // float was undefined behaviour (and gave -inf). Pupil's confidence lies in [0, 1].
+  const std::string payload = packSurfaceMessage("screen", {{0.25, 0.75, -2.9e238, true, 1.0},
+                                                            {0.25, 0.75, 1e300, true, 2.0},
+                                                            {0.25, 0.75, 1.5, true, 3.0},
+                                                            {0.25, 0.75, -0.1, true, 4.0},
+                                                            {0.5, 0.5, 1.0, true, 5.0},
+                                                            {0.5, 0.5, 0.0, true, 6.0}});
+  std::vector<TrackerSample> out;
+  std::size_t skipped = 0;
+  ASSERT_EQ(decodePupilSurfaceMessage(payload.data(), payload.size(), 0, out, skipped), "");
+  EXPECT_EQ(skipped, 4u);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0].confidence, 1.0f);
+  EXPECT_EQ(out[1].confidence, 0.0f);
+}

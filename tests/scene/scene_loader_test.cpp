@@ -94,6 +94,14 @@ TEST(SceneLoader, MissingKeyAndBadJsonAreReported) {
   EXPECT_NE(errorOf("{not json").find("not valid JSON"), std::string::npos);
 }
 
+TEST(SceneLoader, NumberBeyondDoubleRangeIsASceneError) {
+  // Found by tests/fuzz/fuzz_scene_loader (its input, verbatim): nlohmann reports a number too large
+  // for a double as out_of_range, not parse_error, and it escaped parseScene as a non-SceneError.
+  const std::string fuzz_input("[\n 7777e7737!76\xef\xef\xaf\n");
+  EXPECT_NE(errorOf(fuzz_input).find("not valid JSON"), std::string::npos);
+  EXPECT_NE(errorOf(withKey(R"("frames": 1e999)")).find("not valid JSON"), std::string::npos);
+}
+
 TEST(SceneLoader, UnknownSceneNameListsKnownOnes) {
   try {
     scene::loadScene("no_such_scene");

@@ -1,0 +1,214 @@
+"""Frames from sph_server: decoding into numpy arrays, and a subscriber.
+
+The checks mirror the viewer's decoder (client_viewer/decoded_frame.cpp): a frame whose byte
+lengths disagree with particle_count, or with an unknown version or encoding, is refused as a whole
+rather than drawn half right.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+import zmq
+
+from . import curve
+from .proto import pb
+
+CLASS_SMALL = 0
+CLASS_LARGE = 1
+
+_FLOAT3 = np.dtype("<f4")
+_UINT16 = np.dtype("<u2")
+
+
+class FrameDecodeError(ValueError):
+    """The frame's bytes are not a usable gsph.v1.Frame."""
+
+
+@dataclass
+class DecodedFrame:
+    """A checked frame. `positions` is (n, 3) float32; for FLOAT32 frames it is a read-only view of
+    the message's bytes (no copy), for QUANTIZED16 frames it is computed from `quantized`, the raw
+    (n, 3) uint16 view. `size_classes` is a (n,) uint8 view (0 SMALL, 1 LARGE); `velocities` an
+    (n, 3) float32 view or None."""
+
+    message: "pb.Frame"
+    positions: np.ndarray
+    size_classes: np.ndarray
+    velocities: Optional[np.ndarray] = None
+    quantized: Optional[np.ndarray] = None
+    received_ns: int = 0  # time.monotonic_ns() when the bytes left the socket
+    wire_bytes: int = 0
+
+    @property
+    def sequence(self) -> int:
+        return self.message.sequence
+
+    @property
+    def step(self) -> int:
+        return self.message.step
+
+    def box(self) -> Optional[tuple[np.ndarray, np.ndarray]]:
+        """The container (min, max) at the frame's sim time, or None when the frame has none."""
+        g = self.message.geometry
+        if not g.HasField("box"):
+            return None
+        return _vec(g.box.min), _vec(g.box.max)
+
+
+def _vec(v) -> np.ndarray:
+    return np.array([v.x, v.y, v.z], dtype=np.float32)
+
+
+def _triples(data: bytes, dtype: np.dtype, n: int, what: str) -> np.ndarray:
+    expected = n * 3 * dtype.itemsize
+    if len(data) != expected:
+        raise FrameDecodeError(f"{what} hold {len(data)} bytes, expected {expected} for {n} particles")
+    return np.frombuffer(data, dtype=dtype).reshape(n, 3)
+
+
+def decode_frame(message: "pb.Frame", check_finite: bool = True) -> DecodedFrame:
+    """Checks and unpacks a parsed Frame; raises FrameDecodeError."""
+    if message.protocol_version != pb.PROTOCOL_VERSION_CURRENT:
+        raise FrameDecodeError(f"unknown protocol_version {message.protocol_version}")
+    n = message.particle_count
+    quantized = None
+    if message.encoding == pb.POSITION_ENCODING_FLOAT32:
+        positions = _triples(message.positions, _FLOAT3, n, "float32 positions")
+    elif message.encoding == pb.POSITION_ENCODING_QUANTIZED16:
+        quantized = _triples(message.positions, _UINT16, n, "quantized16 positions")
+        if not message.HasField("quantization_box"):
+            raise FrameDecodeError("quantized16 positions without a quantization_box")
+        lo, hi = _vec(message.quantization_box.min), _vec(message.quantization_box.max)
+        if not (np.isfinite(lo).all() and np.isfinite(hi).all() and (hi >= lo).all()):
+            raise FrameDecodeError("quantization_box is not finite or has max < min")
+        # value v maps to min + v / 65535 * (max - min) per axis (proto/sph.proto)
+        positions = lo + quantized.astype(np.float32) * ((hi - lo) / np.float32(65535.0))
+    else:
+        raise FrameDecodeError(f"unknown position encoding {message.encoding}")
+    if check_finite and not np.isfinite(positions).all():
+        raise FrameDecodeError("a position is not finite")
+    if len(message.size_classes) != n:
+        raise FrameDecodeError(
+            f"size_classes holds {len(message.size_classes)} bytes, expected one per particle ({n})"
+        )
+    classes = np.frombuffer(message.size_classes, dtype=np.uint8)
+    if n and classes.max() > CLASS_LARGE:
+        raise FrameDecodeError(f"size class {int(classes.max())} is neither SMALL (0) nor LARGE (1)")
+    velocities = None
+    if message.velocities:
+        velocities = _triples(message.velocities, _FLOAT3, n, "velocities")
+    return DecodedFrame(message, positions, classes, velocities, quantized)
+
+
+def decode_frame_bytes(data: bytes, check_finite: bool = True) -> DecodedFrame:
+    message = pb.Frame()
+    try:
+        message.ParseFromString(data)
+    except Exception as error:  # protobuf raises its own DecodeError; callers need one type
+        raise FrameDecodeError(f"frame bytes do not parse as gsph.v1.Frame: {error}") from error
+    frame = decode_frame(message, check_finite)
+    frame.wire_bytes = len(data)
+    return frame
+
+
+@dataclass
+class SequenceTracker:
+    """Counts frames and gaps in Frame.sequence (it increases by one per published frame)."""
+
+    frames: int = 0
+    gaps: int = 0  # places where at least one frame was skipped
+    missed: int = 0  # frames skipped in all
+    first: Optional[int] = None
+    last: Optional[int] = None
+    restarts: int = 0  # sequence went backwards (server restarted)
+
+    def add(self, sequence: int) -> None:
+        self.frames += 1
+        if self.last is not None:
+            if sequence > self.last + 1:
+                self.gaps += 1
+                self.missed += sequence - self.last - 1
+            elif sequence <= self.last:
+                self.restarts += 1
+        if self.first is None:
+            self.first = sequence
+        self.last = sequence
+
+
+class FrameSubscriber:
+    """A SUB socket on the frame endpoint (subscribed to everything: frames carry no topic part).
+
+    conflate=True keeps only the newest frame (a viewer); False queues up to `rcvhwm` frames so
+    every frame is seen and sequence gaps are real drops (a load test, a soak).
+    """
+
+    def __init__(
+        self,
+        endpoint: str = "tcp://127.0.0.1:5555",
+        *,
+        context: Optional[zmq.Context] = None,
+        conflate: bool = False,
+        rcvhwm: int = 100,
+        curve_secret: Optional[str] = None,
+        curve_server: Optional[str] = None,
+    ):
+        self._context = context or zmq.Context.instance()
+        self.socket = self._context.socket(zmq.SUB)
+        with curve.closed_on_error(self.socket):
+            self.socket.setsockopt(zmq.LINGER, 0)
+            if conflate:
+                self.socket.setsockopt(zmq.CONFLATE, 1)
+            else:
+                self.socket.setsockopt(zmq.RCVHWM, rcvhwm)
+            curve.configure_client(self.socket, curve_secret, curve_server)
+            self.socket.setsockopt(zmq.SUBSCRIBE, b"")
+            self.socket.connect(endpoint)
+        self.endpoint = endpoint
+        self.sequence = SequenceTracker()
+        self.rejected = 0  # frames that did not decode
+
+    def recv_bytes(self, timeout_s: Optional[float] = None) -> Optional[bytes]:
+        """The next frame's bytes, or None after timeout_s (None waits forever)."""
+        if timeout_s is not None and not self.socket.poll(int(timeout_s * 1000)):
+            return None
+        return self.socket.recv(copy=True)
+
+    def recv(self, timeout_s: Optional[float] = None, decode: bool = True) -> Optional[DecodedFrame]:
+        """The next frame that decodes, or None after timeout_s. decode=False skips the numpy
+        unpacking and checks (positions etc. are then empty arrays; `message` is parsed)."""
+        deadline = None if timeout_s is None else time.monotonic() + timeout_s
+        while True:
+            remaining = None if deadline is None else max(0.0, deadline - time.monotonic())
+            data = self.recv_bytes(remaining)
+            if data is None:
+                return None
+            received = time.monotonic_ns()
+            try:
+                if decode:
+                    frame = decode_frame_bytes(data)
+                else:
+                    message = pb.Frame()
+                    message.ParseFromString(data)
+                    empty = np.empty((0, 3), np.float32)
+                    frame = DecodedFrame(message, empty, np.empty(0, np.uint8), wire_bytes=len(data))
+            except Exception:
+                self.rejected += 1
+                if deadline is not None and time.monotonic() >= deadline:
+                    return None
+                continue
+            frame.received_ns = received
+            self.sequence.add(frame.message.sequence)
+            return frame
+
+    def close(self) -> None:
+        self.socket.close(linger=0)
+
+    def __enter__(self) -> "FrameSubscriber":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
