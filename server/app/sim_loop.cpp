@@ -34,6 +34,7 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
       settings_(options.settings),
       session_(options.scene_dir, options.adaptive_overrides, [this](sph::AdaptiveController& c) { feedGaze(c); }),
       control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }} {
+  encoder_.setNeighborCounts(options.neighbor_counts);
   session_.load(options.scene, options.method, /*allow_paths=*/true);
   net::fromScreenCamera(session_.camera(), camera_msg_);
   camera_msg_.set_viewer_id("scene");

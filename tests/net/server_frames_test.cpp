@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <omp.h>
+
+#include <algorithm>
 #include <functional>
 
 #include "net/frame_encoder.h"
@@ -60,6 +62,33 @@ void expectFrameMatches(bool quantized) {
 TEST(ServerFrames, Float32FramesMatchTheLibraryState) { expectFrameMatches(false); }
 
 TEST(ServerFrames, QuantizedFramesMatchTheLibraryState) { expectFrameMatches(true); }
+
+// The regular method splits and merges nothing, so the counts are exactly the library's.
+TEST(ServerFrames, NeighborCountsOnlyWhenAsked) {
+  constexpr int kSteps = 3;
+  for (const bool asked : {false, true}) {
+    auto options = net_test::testOptions(sph::Method::Regular);
+    options.sim.settings.free_run = true;
+    options.sim.max_steps = kSteps;
+    options.sim.neighbor_counts = asked;
+    auto server = net_test::startServer(options);
+    zmq::context_t ctx;
+    FrameSubscriber sub(ctx, server->endpoints().frames);
+    auto frame = sub.waitFor([&](const gsph::v1::Frame& f) { return f.step() == kSteps; });
+    ASSERT_TRUE(frame);
+    if (!asked) {
+      EXPECT_TRUE(frame->neighbor_counts().empty());
+      continue;
+    }
+    const sph::Simulation ref = referenceRun(kSteps);
+    ASSERT_EQ(frame->neighbor_counts().size(), ref.particles().size());
+    for (std::size_t i = 0; i < ref.particles().size(); ++i) {
+      ASSERT_EQ(static_cast<std::uint8_t>(frame->neighbor_counts()[i]),
+                std::min<std::uint32_t>(ref.grid().neighborCount(i), 255u))
+          << "particle " << i;
+    }
+  }
+}
 
 // Every frame offered gets the next number; one the pipe drops (a descheduled network thread)
 // shows as a gap, so the test allows gaps but never a repeat or a step back, and needs some two
