@@ -7,6 +7,7 @@
 
 #include "network_client.h"
 #include "particle_renderer.h"
+#include "render_settings.h"
 
 namespace viewer {
 
@@ -19,7 +20,10 @@ struct ViewerOptions {
   std::optional<std::array<float, 2>> gaze_at;  // a fixed gaze point (demos, screenshots)
   bool panel = true;
   bool vsync = true;
-  ColourMode colour = ColourMode::kSizeClass;
+  RenderMode render = RenderMode::kFluid;
+  RenderDebug render_debug = RenderDebug::kNone;
+  int fluid_scale = 0;  // fluid passes at 1 / this resolution; 0: by the GL (defaultFluidScale())
+  ColourMode colour = ColourMode::kSizeClass;  // particles mode
   // Camera: the scene's pose from the first frame unless --eye/--target are given.
   std::optional<std::array<float, 3>> eye;
   std::optional<std::array<float, 3>> target;

@@ -31,15 +31,17 @@ FrameSpec fourParticles() {
   return spec;
 }
 
+// Particles mode: these tests look at the size-class colours.
 std::vector<std::string> cameraArgs() {
-  return {"--eye",     "0",
-          "0",         "2.5",
-          "--target",  "0",
-          "0",         "0",
-          "--fov",     "45",
-          "--width",   std::to_string(kWidth),
-          "--height",  std::to_string(kHeight),
-          "--no-panel"};
+  return {"--eye",      "0",
+          "0",          "2.5",
+          "--target",   "0",
+          "0",          "0",
+          "--fov",      "45",
+          "--width",    std::to_string(kWidth),
+          "--height",   std::to_string(kHeight),
+          "--no-panel", "--render",
+          "particles"};
 }
 
 std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -180,8 +182,9 @@ TEST(ViewerOptions, HelpListsEveryOptionAndBadOptionsFail) {
   auto help = startViewer({"--help"}, dir + "/help.log");
   ASSERT_EQ(help->waitExit(20s), std::optional<int>(0));
   const std::string text = readFile(dir + "/help.log");
-  for (const char* option : {"--frames-endpoint", "--pose-endpoint", "--gaze-endpoint", "--control-endpoint",
-                             "--mouse-gaze", "--snapshot", "--frames", "--eye", "--target", "--report"}) {
+  for (const char* option :
+       {"--frames-endpoint", "--pose-endpoint", "--gaze-endpoint", "--control-endpoint", "--mouse-gaze", "--snapshot",
+        "--frames", "--eye", "--target", "--report", "--render", "--render-debug", "--fluid-scale"}) {
     EXPECT_NE(text.find(option), std::string::npos) << option;
   }
   auto bad = startViewer({"--width", "-5"}, dir + "/bad.log");
@@ -190,4 +193,11 @@ TEST(ViewerOptions, HelpListsEveryOptionAndBadOptionsFail) {
   EXPECT_NE(*code, 0);
   auto half_camera = startViewer({"--eye", "0", "0", "1"}, dir + "/bad2.log");
   EXPECT_EQ(half_camera->waitExit(20s), std::optional<int>(2));
+  auto bad_mode = startViewer({"--render", "voxels"}, dir + "/bad3.log");
+  const auto bad_mode_code = bad_mode->waitExit(20s);
+  ASSERT_TRUE(bad_mode_code.has_value());
+  EXPECT_NE(*bad_mode_code, 0);
+  // Thickness is a fluid pass; particles mode has none to show.
+  auto no_thickness = startViewer({"--render", "particles", "--render-debug", "thickness"}, dir + "/bad4.log");
+  EXPECT_EQ(no_thickness->waitExit(20s), std::optional<int>(2));
 }

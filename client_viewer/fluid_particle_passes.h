@@ -1,0 +1,53 @@
+// The fluid mode's passes over the particles, each drawing every particle as a sphere impostor of
+// its own class radius (van der Laan, Green & Sainz 2009, section 3):
+//  - surface: into two attachments at once, the nearest sphere surface per pixel in metres along
+//    the view axis (MIN blending, so no gl_FragDepth, and the overlap of two spheres is resolved
+//    exactly), and the chord length through each sphere, summed (additive blending) as thickness;
+//  - droplets: spray particles, left out of the surface, as small shaded spheres.
+// A particle is spray when the frame's neighbour counts say it has at most kSprayMaxNeighbours;
+// without counts every particle belongs to the surface.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "gl_program.h"
+#include "particle_buffers.h"
+
+namespace viewer {
+
+// SPH particles inside the liquid have some 30-60 neighbours, those on its surface about half as
+// many; a particle with this many or fewer has left the body of water.
+inline constexpr int kSprayMaxNeighbours = 6;
+// Droplets are drawn smaller than the particle: a lone particle stands for a blob of spray whose
+// volume the simulation spreads over its whole kernel.
+inline constexpr float kDropletRadiusScale = 0.6f;
+
+// The backdrop's depth texture, and where a pixel of the pass that reads it falls on it: backdrop
+// pixel = (pass pixel - guard) * scale (the surface passes draw a guard band around the picture).
+struct SceneDepth {
+  GLuint texture;
+  float scale;
+  float guard;
+};
+
+class FluidParticlePasses {
+ public:
+  FluidParticlePasses();
+  // Into the bound framebuffer: attachment 0 depth, attachment 1 thickness, both cleared here; what
+  // lies behind the backdrop is left out. One pass where the context blends each attachment its own
+  // way (GL 4.0, ARB_draw_buffers_blend), else one pass per attachment.
+  void drawSurface(const ParticleBuffers& particles, const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
+                   const SceneDepth& scene) const;
+  // Depth-tested against the composite's depth; writes colour and depth.
+  void drawDroplets(const ParticleBuffers& particles, const Eigen::Matrix4f& view,
+                    const Eigen::Matrix4f& projection) const;
+
+ private:
+  void draw(const GlProgram& program, const ParticleBuffers& particles, const Eigen::Matrix4f& view,
+            const Eigen::Matrix4f& projection, bool spray) const;
+  GlProgram surface_;
+  GlProgram droplets_;
+  bool blend_per_attachment_;
+};
+
+}  // namespace viewer
