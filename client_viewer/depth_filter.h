@@ -31,7 +31,7 @@ struct DepthFilterSettings {
 
 class DepthFilter {
  public:
-  static constexpr int kMaxTaps = 24;       // samples per side and pass
+  static constexpr int kMaxTaps = 24;        // samples per side and pass
   static constexpr float kMaxStride = 2.0f;  // texels between samples
 
   DepthFilter();

@@ -22,7 +22,7 @@ layout(location = 1) out float o_depth;
 
 // Absorption per metre of summed sphere chords (about the water's depth: the presets' particle
 // spheres hold the particle's volume), red most: a few centimetres tint, half a metre is deep blue.
-const vec3 kAbsorption = vec3(7.0, 2.6, 1.5);
+const vec3 kAbsorption = vec3(11.0, 4.2, 2.4);
 const vec3 kDeepWater = vec3(0.015, 0.09, 0.16);
 const float kRefraction = 0.25;  // uv offset per metre of thickness and unit of normal
 const float kMaxRefractThickness = 0.15;
@@ -131,8 +131,8 @@ void main() {
 }  // namespace
 
 FluidComposite::FluidComposite()
-    : shade_(glslSource({kGlslCommon, kFullscreenVertexShader}).c_str(), glslSource({kGlslCommon, kShadeShader}).c_str(),
-             "fluid shade"),
+    : shade_(glslSource({kGlslCommon, kFullscreenVertexShader}).c_str(),
+             glslSource({kGlslCommon, kShadeShader}).c_str(), "fluid shade"),
       present_(glslSource({kGlslCommon, kFullscreenVertexShader}).c_str(),
                glslSource({kGlslCommon, kPresentShader}).c_str(), "fluid present"),
       present_debug_(glslSource({kGlslCommon, kFullscreenVertexShader}).c_str(),

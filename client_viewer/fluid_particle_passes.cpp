@@ -88,10 +88,10 @@ void main() {
 }  // namespace
 
 FluidParticlePasses::FluidParticlePasses()
-    : surface_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(), glslSource({kGlslCommon, kSurfaceFragment}).c_str(),
-               "fluid surface"),
-      droplets_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(), glslSource({kGlslCommon, kDropletFragment}).c_str(),
-                "fluid droplets"),
+    : surface_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(),
+               glslSource({kGlslCommon, kSurfaceFragment}).c_str(), "fluid surface"),
+      droplets_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(),
+                glslSource({kGlslCommon, kDropletFragment}).c_str(), "fluid droplets"),
       blend_per_attachment_(epoxy_gl_version() >= 40 || epoxy_has_gl_extension("GL_ARB_draw_buffers_blend")) {}
 
 void FluidParticlePasses::draw(const GlProgram& program, const ParticleBuffers& particles, const Eigen::Matrix4f& view,
@@ -103,7 +103,7 @@ void FluidParticlePasses::draw(const GlProgram& program, const ParticleBuffers& 
   glUniform1fv(program.uniform("u_radius"), 2, particles.radii());
   glUniform1f(program.uniform("u_spray_max"), static_cast<float>(kSprayMaxNeighbours));
   glUniform1i(program.uniform("u_spray"), spray ? 1 : 0);
-  glUniform1f(program.uniform("u_radius_scale"), spray ? kDropletRadiusScale : 1.0f);
+  glUniform1f(program.uniform("u_radius_scale"), spray ? kDropletRadiusScale : kSurfaceRadiusScale);
   particles.draw(program.id());
 }
 

@@ -16,8 +16,12 @@
 namespace viewer {
 
 // SPH particles inside the liquid have some 30-60 neighbours, those on its surface about half as
-// many; a particle with this many or fewer has left the body of water.
-inline constexpr int kSprayMaxNeighbours = 6;
+// many, and one in a sheet a single particle thick still about six; a particle with this many or
+// fewer has left the body of water.
+inline constexpr int kSprayMaxNeighbours = 3;
+// The surface passes draw each sphere this much larger than the particle: in thin sheets the
+// particles lie further apart than in the bulk, and the gaps between them would show as holes.
+inline constexpr float kSurfaceRadiusScale = 1.25f;
 // Droplets are drawn smaller than the particle: a lone particle stands for a blob of spray whose
 // volume the simulation spreads over its whole kernel.
 inline constexpr float kDropletRadiusScale = 0.6f;

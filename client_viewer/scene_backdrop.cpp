@@ -122,8 +122,14 @@ SceneBackdrop::SceneBackdrop()
 
 void SceneBackdrop::setGeometry(const SceneGeometry& g) {
   // Cylinders run floor to roof of the box; without a box a nominal metre (as the outlines do).
-  std::vector<float> shapes = {g.has_box ? 1.0f : 0.0f, g.box_min.x, g.box_min.y, g.box_min.z, g.box_max.x,
-                               g.box_max.y, g.box_max.z, g.has_box ? g.box_min.y : 0.0f,
+  std::vector<float> shapes = {g.has_box ? 1.0f : 0.0f,
+                               g.box_min.x,
+                               g.box_min.y,
+                               g.box_min.z,
+                               g.box_max.x,
+                               g.box_max.y,
+                               g.box_max.z,
+                               g.has_box ? g.box_min.y : 0.0f,
                                g.has_box ? g.box_max.y : 1.0f};
   const std::size_t spheres = std::min<std::size_t>(g.spheres.size(), kMaxObstacles);
   const std::size_t cylinders = std::min<std::size_t>(g.cylinders.size(), kMaxObstacles);

@@ -18,16 +18,22 @@ namespace {
 
 constexpr int kWidth = 320;
 constexpr int kHeight = 240;
-constexpr double kSmall = 0.02;        // particle radii, metres
-constexpr double kLarge = 0.0252;      // 2^(1/3) kSmall: a LARGE particle has twice the volume
-constexpr double kPoolTop = -1.48;     // the pools' surface, 12 cm above the floor of the box
-constexpr float kBoxHalf = 1.6f;       // box [-1.6, 1.6]^3
+constexpr double kSmall = 0.02;     // particle radii, metres
+constexpr double kLarge = 0.0252;   // 2^(1/3) kSmall: a LARGE particle has twice the volume
+constexpr double kPoolTop = -1.48;  // the pools' surface, 12 cm above the floor of the box
+constexpr float kBoxHalf = 1.6f;    // box [-1.6, 1.6]^3
 const Vec3d kUp{0.0, 1.0, 0.0};
 
 std::vector<std::string> cameraArgs(const std::string& eye_x, const std::string& eye_y, const std::string& eye_z,
                                     const std::string& target_y) {
-  return {"--eye", eye_x, eye_y, eye_z, "--target", "0", target_y, "0", "--fov", "45",
-          "--width", std::to_string(kWidth), "--height", std::to_string(kHeight), "--no-panel"};
+  return {"--eye",     eye_x,
+          eye_y,       eye_z,
+          "--target",  "0",
+          target_y,    "0",
+          "--fov",     "45",
+          "--width",   std::to_string(kWidth),
+          "--height",  std::to_string(kHeight),
+          "--no-panel"};
 }
 
 // Looking down at about 55 degrees onto the middle of the pool, which reaches past every edge of
@@ -143,13 +149,15 @@ TEST(FluidWindow, ThickerWaterIsDarker) {
   const std::string dir = scratchDir();
   FrameSpec spec = poolSpec();
   spec.with_box = false;  // against the sky, the same behind every part of the wedge
-  // A wedge facing the camera: front face at z = 0, depth from 4 cm at x = -0.6 to 54 cm at 0.6.
+  // A wedge facing the camera: front face at z = 0, depth from 4 cm at x = -0.6 to 34 cm at 0.6
+  // (past that the absorption has taken most of the light and the colour changes little).
   const double r = kSmall, spacing = kSpacingPerRadius * kSmall;
   for (double x = -0.6 + r; x < 0.6; x += spacing) {
-    const int layers = std::max(1, static_cast<int>(std::lround((0.04 + 0.5 * (x + 0.6) / 1.2) / spacing)));
+    const int layers = std::max(1, static_cast<int>(std::lround((0.04 + 0.3 * (x + 0.6) / 1.2) / spacing)));
     for (double y = -0.3 + r; y < 0.3; y += spacing) {
       for (int k = 0; k < layers; ++k) {
-        spec.particles.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(-r - k * spacing), 0});
+        spec.particles.push_back(
+            {static_cast<float>(x), static_cast<float>(y), static_cast<float>(-r - k * spacing), 0});
       }
     }
   }
@@ -157,12 +165,12 @@ TEST(FluidWindow, ThickerWaterIsDarker) {
   auto shot = takeSnapshot(server, cameraArgs("0", "0", "1.6", "0"), dir, "wedge");
   ASSERT_TRUE(shot);
   // Mean brightness in 8 bins across the wedge's inner 70 %, middle half of its height.
-  const auto left = projectToPixel(shot->pose.view().data(), shot->pose.projection().data(), {-0.6, 0.0, 0.0},
-                                   kWidth, kHeight);
-  const auto right = projectToPixel(shot->pose.view().data(), shot->pose.projection().data(), {0.6, 0.0, 0.0},
-                                    kWidth, kHeight);
-  const auto top = projectToPixel(shot->pose.view().data(), shot->pose.projection().data(), {0.0, 0.3, 0.0}, kWidth,
-                                  kHeight);
+  const auto left =
+      projectToPixel(shot->pose.view().data(), shot->pose.projection().data(), {-0.6, 0.0, 0.0}, kWidth, kHeight);
+  const auto right =
+      projectToPixel(shot->pose.view().data(), shot->pose.projection().data(), {0.6, 0.0, 0.0}, kWidth, kHeight);
+  const auto top =
+      projectToPixel(shot->pose.view().data(), shot->pose.projection().data(), {0.0, 0.3, 0.0}, kWidth, kHeight);
   const double x0 = left[0] + 0.15 * (right[0] - left[0]), x1 = right[0] - 0.15 * (right[0] - left[0]);
   const double half_height = kHeight / 2.0 - top[1];
   constexpr int kBins = 8;
