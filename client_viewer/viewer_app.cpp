@@ -114,7 +114,8 @@ ExitCode ViewerApp::run() {
     const bool frames_done = options_.frames > 0 && frames_shown_ >= options_.frames;
     const bool timed_out =
         options_.timeout_s > 0.0 && std::chrono::duration<double>(now - started_).count() > options_.timeout_s;
-    const bool snapshot_now = !options_.snapshot.empty() && (frames_done || timed_out);
+    const bool sim_time_reached = options_.snapshot_at_s >= 0.0 && frame_ && frame_->sim_time >= options_.snapshot_at_s;
+    const bool snapshot_now = !options_.snapshot.empty() && (frames_done || sim_time_reached || timed_out);
     if (snapshot_now) writeSnapshot();
     target_.blitToWindow();
     glfwSwapBuffers(window);

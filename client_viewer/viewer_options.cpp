@@ -68,6 +68,10 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   app.add_option("--frames", o.frames, "Server frames to show before the snapshot or exit (0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  auto* at_opt = app.add_option("--snapshot-at", o.snapshot_at_s,
+                                "With --snapshot: take it at the first frame of at least this sim time (s), not "
+                                "after --frames")
+                     ->check(CLI::NonNegativeNumber);
   auto* timeout_opt =
       app.add_option("--timeout", o.timeout_s, "Give up after this many seconds (exit 3; default 30 with --snapshot)")
           ->check(CLI::NonNegativeNumber);
@@ -92,7 +96,7 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   if (!o.snapshot.empty()) {
     o.visible = visible_opt->count() > 0;
     if (timeout_opt->count() == 0) o.timeout_s = 30.0;
-    if (o.frames == 0) o.frames = 1;
+    if (o.frames == 0 && at_opt->count() == 0) o.frames = 1;
   }
   return std::nullopt;
 }

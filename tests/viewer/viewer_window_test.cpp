@@ -156,6 +156,22 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
   EXPECT_TRUE(sameWithinOnePixel(images[1], images[0], where)) << "quantized pixel " << where << " unmatched";
 }
 
+// The test frames' sim time is 0.01 s per sequence number: 30 frames never reach 0.5 s, 100 do.
+TEST(ViewerWindow, SnapshotAtWaitsForTheSimTime) {
+  const std::string dir = scratchDir();
+  for (const std::uint64_t frames : {30u, 100u}) {
+    TestServer server(makeFrame(fourParticles(), 1), "", 1, std::chrono::milliseconds(20), frames);
+    const std::string tag = std::to_string(frames);
+    auto viewer =
+        startViewer(join(join(cameraArgs(), server.endpointArgs()),
+                         {"--snapshot", dir + "/at" + tag + ".png", "--snapshot-at", "0.5", "--timeout", "8"}),
+                    dir + "/viewer" + tag + ".log");
+    const auto code = viewer->waitExit(60s);
+    ASSERT_TRUE(code.has_value());
+    EXPECT_EQ(*code, frames < 50 ? 3 : 0) << readFile(dir + "/viewer" + tag + ".log");
+  }
+}
+
 TEST(ViewerWindow, WaitsForServerAndTimesOutWithAPicture) {
   const std::string dir = scratchDir();
   // An endpoint no server is on: a TCP port held bound but not listening, so connections are
