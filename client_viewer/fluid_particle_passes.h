@@ -20,8 +20,10 @@ namespace viewer {
 // fewer has left the body of water.
 inline constexpr int kSprayMaxNeighbours = 3;
 // The surface passes draw each sphere this much larger than the particle: in thin sheets the
-// particles lie further apart than in the bulk, and the gaps between them would show as holes.
-inline constexpr float kSurfaceRadiusScale = 1.25f;
+// particles lie further apart than in the bulk, and the gaps between them show as holes. Larger
+// closes more of them but costs fragments, the fluid mode's largest cost on software GL
+// (docs/performance.md, "Viewer").
+inline constexpr float kSurfaceRadiusScale = 1.1f;
 // Droplets are drawn smaller than the particle: a lone particle stands for a blob of spray whose
 // volume the simulation spreads over its whole kernel.
 inline constexpr float kDropletRadiusScale = 0.6f;
