@@ -21,23 +21,20 @@ flat out float v_radius;
 flat out float v_centre_z;
 
 void main() {
-  vec4 particle = texelFetch(u_particles, particleIndex());
-  float neighbours = texelFetch(u_attributes, particleIndex()).y;
-  vec2 corner = quadCorner();
-  bool spray = neighbours <= u_spray_max;
+  bool spray = a_attrs.z <= u_spray_max;
   if (spray != (u_spray == 1)) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: the quad is culled
     return;
   }
-  float radius = u_radius[particle.w > 0.5 ? 1 : 0] * u_radius_scale;
-  vec4 centre = u_view * vec4(particle.xyz, 1.0);
-  v_corner = corner;
+  float radius = u_radius[a_attrs.x > 0.5 ? 1 : 0] * u_radius_scale;
+  vec4 centre = u_view * vec4(a_centre, 1.0);
+  v_corner = a_corner;
   v_radius = radius;
   v_centre_z = centre.z;
   // The quad at the sphere's front, scaled to keep its outline (as particle_renderer.cpp): the
   // droplets are depth-tested, and early depth tests need the quad's own depth to be right.
   float scale = (centre.z + radius) / centre.z;
-  gl_Position = u_projection * vec4((centre.xy + corner * radius) * scale, centre.z + radius, 1.0);
+  gl_Position = u_projection * vec4((centre.xy + a_corner * radius) * scale, centre.z + radius, 1.0);
 }
 )";
 
@@ -88,9 +85,9 @@ void main() {
 }  // namespace
 
 FluidParticlePasses::FluidParticlePasses()
-    : surface_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(),
+    : surface_(glslSource({kGlslCommon, kGlslParticleAttributes, kVertexShader}).c_str(),
                glslSource({kGlslCommon, kSurfaceFragment}).c_str(), "fluid surface"),
-      droplets_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(),
+      droplets_(glslSource({kGlslCommon, kGlslParticleAttributes, kVertexShader}).c_str(),
                 glslSource({kGlslCommon, kDropletFragment}).c_str(), "fluid droplets"),
       blend_per_attachment_(epoxy_gl_version() >= 40 || epoxy_has_gl_extension("GL_ARB_draw_buffers_blend")) {}
 
@@ -104,7 +101,7 @@ void FluidParticlePasses::draw(const GlProgram& program, const ParticleBuffers& 
   glUniform1f(program.uniform("u_spray_max"), static_cast<float>(kSprayMaxNeighbours));
   glUniform1i(program.uniform("u_spray"), spray ? 1 : 0);
   glUniform1f(program.uniform("u_radius_scale"), spray ? kDropletRadiusScale : kSurfaceRadiusScale);
-  particles.draw(program.id());
+  particles.draw();
 }
 
 void FluidParticlePasses::drawSurface(const ParticleBuffers& particles, const Eigen::Matrix4f& view,

@@ -25,17 +25,14 @@ vec3 speedColour(float t) {  // blue -> cyan -> yellow -> red
 }
 
 void main() {
-  vec4 particle = texelFetch(u_particles, particleIndex());
-  vec2 attrs = texelFetch(u_attributes, particleIndex()).xy;  // speed, neighbours
-  vec2 corner = quadCorner();
-  int size_class = particle.w > 0.5 ? 1 : 0;
+  int size_class = a_attrs.x > 0.5 ? 1 : 0;
   float radius = u_radius[size_class];
-  vec4 centre = u_view * vec4(particle.xyz, 1.0);
-  v_corner = corner;
+  vec4 centre = u_view * vec4(a_centre, 1.0);
+  v_corner = a_corner;
   v_radius = radius;
   v_centre_z = centre.z;
   if (u_colour_mode == 1) {
-    v_colour = speedColour(attrs.x / u_max_speed);
+    v_colour = speedColour(a_attrs.y / u_max_speed);
   } else {
     v_colour = size_class == 1 ? vec3(0.92, 0.18, 0.12) : vec3(0.15, 0.38, 1.0);
   }
@@ -43,7 +40,7 @@ void main() {
   // depth buffer then orders spheres by their nearest points, without writing gl_FragDepth (which
   // would turn off early depth testing and halve the fill rate of software GL).
   float scale = (centre.z + radius) / centre.z;
-  gl_Position = u_projection * vec4((centre.xy + corner * radius) * scale, centre.z + radius, 1.0);
+  gl_Position = u_projection * vec4((centre.xy + a_corner * radius) * scale, centre.z + radius, 1.0);
 }
 )";
 
@@ -76,7 +73,7 @@ void main() {
 }  // namespace
 
 ParticleRenderer::ParticleRenderer()
-    : program_(glslSource({kGlslCommon, kGlslParticleFetch, kVertexShader}).c_str(),
+    : program_(glslSource({kGlslCommon, kGlslParticleAttributes, kVertexShader}).c_str(),
                glslSource({kGlslCommon, kFragmentShader}).c_str(), "particles") {}
 
 void ParticleRenderer::draw(const ParticleBuffers& particles, const Eigen::Matrix4f& view,
@@ -90,7 +87,7 @@ void ParticleRenderer::draw(const ParticleBuffers& particles, const Eigen::Matri
   glUniform1i(program_.uniform("u_colour_mode"), mode == ColourMode::kSpeed && particles.hasSpeed() ? 1 : 0);
   glUniform1f(program_.uniform("u_max_speed"), particles.maxSpeed());
   glUniform1i(program_.uniform("u_debug"), static_cast<int>(debug));
-  particles.draw(program_.id());
+  particles.draw();
 }
 
 }  // namespace viewer
