@@ -112,10 +112,6 @@ uniform vec4 u_marker;      // debug: the colour of "no water"
 in vec2 v_uv;
 out vec4 o_colour;
 
-float windowDepth(float depth) {
-  return depth >= kFar ? 1.0 : clamp(0.5 * (u_depth_proj.x * -depth + u_depth_proj.y) / depth + 0.5, 0.0, 1.0);
-}
-
 void main() {
 #ifdef DEBUG
   vec4 water = texelFetch(u_water, ivec2(gl_FragCoord.xy) / u_scale, 0);
@@ -124,7 +120,7 @@ void main() {
   vec4 water = texture(u_water, v_uv);
   o_colour = vec4(texture(u_backdrop, v_uv).rgb * (1.0 - water.a) + water.rgb, 1.0);
 #endif
-  gl_FragDepth = windowDepth(texture(u_depth, v_uv).r);
+  gl_FragDepth = windowDepth(texture(u_depth, v_uv).r, u_depth_proj);
 }
 )";
 

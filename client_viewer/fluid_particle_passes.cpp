@@ -1,5 +1,6 @@
 #include "fluid_particle_passes.h"
 
+#include "fullscreen_pass.h"
 #include "glsl_common.h"
 #include "texture_target.h"
 
@@ -39,12 +40,8 @@ void main() {
 )";
 
 // The surface sees only the water in front of the backdrop (an obstacle hides what is behind it):
-// u_scene_depth is the backdrop's depth, u_scene_scale and u_scene_guard map this pass's pixels
-// onto its pixels (in the guard band, onto the nearest pixel at the picture's edge).
+// the depth test against the backdrop's depth (fillSceneDepth) rejects the rest before shading.
 const char* const kSurfaceFragment = R"(
-uniform sampler2D u_scene_depth;
-uniform float u_scene_scale;
-uniform float u_scene_guard;
 in vec2 v_corner;
 flat in float v_radius;
 flat in float v_centre_z;
@@ -53,14 +50,24 @@ layout(location = 1) out float o_thickness;
 void main() {
   float d2 = dot(v_corner, v_corner);
   if (d2 > 1.0) discard;
+  float half_chord = v_radius * sqrt(1.0 - d2);
+  o_depth = -v_centre_z - half_chord;
+  o_thickness = 2.0 * half_chord;
+}
+)";
+
+// The backdrop's depth (metres along the view axis) into the depth buffer of the surface target:
+// u_scene_scale and u_scene_guard map this pass's pixels onto the backdrop's (in the guard band,
+// onto the nearest pixel at the picture's edge).
+const char* const kSceneDepthFragment = R"(
+uniform sampler2D u_scene_depth;
+uniform float u_scene_scale;
+uniform float u_scene_guard;
+uniform vec2 u_depth_proj;
+void main() {
   ivec2 at = ivec2((gl_FragCoord.xy - u_scene_guard) * u_scene_scale);
   float scene = texelFetch(u_scene_depth, clamp(at, ivec2(0), textureSize(u_scene_depth, 0) - 1), 0).r;
-  float half_chord = v_radius * sqrt(1.0 - d2);
-  float front = -v_centre_z - half_chord;
-  if (front > scene) discard;
-  o_depth = front;
-  // The chord through the sphere, the part behind the backdrop cut off.
-  o_thickness = min(-v_centre_z + half_chord, scene) - front;
+  gl_FragDepth = windowDepth(scene, u_depth_proj);
 }
 )";
 
@@ -89,6 +96,8 @@ FluidParticlePasses::FluidParticlePasses()
                glslSource({kGlslCommon, kSurfaceFragment}).c_str(), "fluid surface"),
       droplets_(glslSource({kGlslCommon, kGlslParticleAttributes, kVertexShader}).c_str(),
                 glslSource({kGlslCommon, kDropletFragment}).c_str(), "fluid droplets"),
+      scene_depth_(glslSource({kGlslCommon, kFullscreenVertexShader}).c_str(),
+                   glslSource({kGlslCommon, kSceneDepthFragment}).c_str(), "fluid scene depth"),
       blend_per_attachment_(epoxy_gl_version() >= 40 || epoxy_has_gl_extension("GL_ARB_draw_buffers_blend")) {}
 
 void FluidParticlePasses::draw(const GlProgram& program, const ParticleBuffers& particles, const Eigen::Matrix4f& view,
@@ -104,16 +113,33 @@ void FluidParticlePasses::draw(const GlProgram& program, const ParticleBuffers& 
   particles.draw();
 }
 
+void FluidParticlePasses::fillSceneDepth(const SceneDepth& scene, const Eigen::Matrix4f& projection,
+                                         const FullscreenTriangle& triangle) const {
+  glUseProgram(scene_depth_.id());
+  bindTexture(scene_depth_.uniform("u_scene_depth"), 0, scene.texture);
+  glUniform1f(scene_depth_.uniform("u_scene_scale"), scene.scale);
+  glUniform1f(scene_depth_.uniform("u_scene_guard"), scene.guard);
+  glUniform2f(scene_depth_.uniform("u_depth_proj"), projection(2, 2), projection(2, 3));
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  triangle.draw();
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+}
+
 void FluidParticlePasses::drawSurface(const ParticleBuffers& particles, const Eigen::Matrix4f& view,
-                                      const Eigen::Matrix4f& projection, const SceneDepth& scene) const {
+                                      const Eigen::Matrix4f& projection) const {
   const float far[4] = {kFar, kFar, kFar, kFar};
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, far);
   glClearBufferfv(GL_COLOR, 1, zero);
-  glUseProgram(surface_.id());
-  bindTexture(surface_.uniform("u_scene_depth"), 0, scene.texture);
-  glUniform1f(surface_.uniform("u_scene_scale"), scene.scale);
-  glUniform1f(surface_.uniform("u_scene_guard"), scene.guard);
+  // Tested against the backdrop's depth, never written: the quads lie at the spheres' fronts, so a
+  // sphere whose front is behind an obstacle is rejected before its fragments are shaded.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   if (blend_per_attachment_) {
@@ -133,6 +159,8 @@ void FluidParticlePasses::drawSurface(const ParticleBuffers& particles, const Ei
   }
   glBlendEquation(GL_FUNC_ADD);
   glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
 }
 
 void FluidParticlePasses::drawDroplets(const ParticleBuffers& particles, const Eigen::Matrix4f& view,

@@ -8,16 +8,18 @@ namespace viewer {
 
 namespace {
 
-// Filter settings in particle radii (of the larger class in the frame). A 3-sigma radius of 4.5
-// radii (sigma 1.5 radii) flattens the bumps of spheres 2 radii apart to well under a degree of
-// slope; the range is wide enough for a layer of particles behind another (2 radii) and for steep
-// views, narrow enough to keep a splash in front apart from the body behind it.
-constexpr float kFilterRadii = 4.5f;
+// Filter settings in particle radii (of the larger class in the frame). A 3-sigma radius of 3.5
+// radii (sigma 1.17 radii) flattens the bumps of spheres 1.6 radii apart (the presets' lattice)
+// to a degree or two of slope; larger costs taps. The range is wide enough for a layer of
+// particles behind another and for steep views, narrow enough to keep a splash in front apart
+// from the body behind it.
+constexpr float kFilterRadii = 3.5f;
 constexpr float kThresholdRadii = 6.0f;
 constexpr float kClampRadii = 1.0f;
-// The surface passes draw this fraction of the picture's height beyond each of its edges, so the
-// filter near an edge has the surface beyond it to average rather than nothing.
-constexpr float kGuardFraction = 0.06f;
+// The surface pass draws this fraction of the picture's height beyond each of its edges, so the
+// filter near an edge has the surface beyond it to average rather than nothing (most of the
+// kernel's weight at the nearest water of the window tests' views).
+constexpr float kGuardFraction = 0.04f;
 
 int scaled(int size, int scale) { return std::max(1, (size + scale - 1) / scale); }
 
@@ -39,9 +41,12 @@ void FluidRenderer::drawSurface(const ParticleBuffers& particles, const Eigen::M
   widened.row(0) *= static_cast<float>(size.width) / static_cast<float>(size.width + 2 * size.guard);
   widened.row(1) *= static_cast<float>(size.height) / static_cast<float>(size.height + 2 * size.guard);
   const int gw = size.width + 2 * size.guard, gh = size.height + 2 * size.guard;
-  surface_target_.bind(gw, gh);
-  passes_.drawSurface(particles, view, widened,
-                      {backdrop_.depth(), static_cast<float>(scale_), static_cast<float>(size.guard)});
+  if (surface_target_.bind(gw, gh) || scene_depth_stale_) {
+    passes_.fillSceneDepth({backdrop_.depth(), static_cast<float>(scale_), static_cast<float>(size.guard)}, widened,
+                           triangle_);
+    scene_depth_stale_ = false;
+  }
+  passes_.drawSurface(particles, view, widened);
 
   const float r = particles.largestRadius();
   const DepthFilterSettings settings{kFilterRadii * r, kThresholdRadii * r, kClampRadii * r,
@@ -57,7 +62,7 @@ void FluidRenderer::draw(const ParticleBuffers& particles, const Eigen::Matrix4f
   const int width = target.width(), height = target.height();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  backdrop_.update(view, projection, width, height, triangle_);
+  if (backdrop_.update(view, projection, width, height, triangle_)) scene_depth_stale_ = true;
   const SurfaceSize size{scaled(width, scale_), scaled(height, scale_),
                          static_cast<int>(std::ceil(kGuardFraction * static_cast<float>(scaled(height, scale_))))};
   drawSurface(particles, view, projection, size);

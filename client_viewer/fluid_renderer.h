@@ -31,7 +31,10 @@ class FluidRenderer {
  public:
   // `scale`: 1 full resolution, 2 half (see defaultFluidScale()).
   explicit FluidRenderer(int scale = 1) : scale_(scale) {}
-  void setScale(int scale) { scale_ = scale; }
+  void setScale(int scale) {
+    scale_ = scale;
+    scene_depth_stale_ = true;
+  }
   void setGeometry(const SceneGeometry& geometry) { backdrop_.setGeometry(geometry); }
   // Draws the water into `target` and leaves it bound, with the picture's depth in its depth buffer
   // (depth test on, GL_LESS, blending off).
@@ -47,13 +50,14 @@ class FluidRenderer {
                    const SurfaceSize& size);
 
   int scale_;
+  bool scene_depth_stale_ = true;  // the surface target's depth buffer no longer the backdrop's
   FullscreenTriangle triangle_;
   SceneBackdrop backdrop_;
   FluidParticlePasses passes_;
   DepthFilter filter_;
   FluidComposite composite_;
   // The surface passes' targets hold a guard band around the picture (fluid_renderer.cpp).
-  TextureTarget surface_target_{{{GL_R32F, GL_LINEAR}, {GL_R16F, GL_LINEAR}}};  // raw depth, thickness
+  TextureTarget surface_target_{{{GL_R32F, GL_LINEAR}, {GL_R32F, GL_LINEAR}}};  // raw depth, thickness
   TextureTarget filtered_target_{{{GL_R32F, GL_LINEAR}}};                       // between the filter passes
   TextureTarget smoothed_target_{{{GL_R32F, GL_LINEAR}}};
   TextureTarget water_target_{{{GL_RGBA8, GL_LINEAR}, {GL_R32F, GL_NEAREST}}};

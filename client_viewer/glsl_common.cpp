@@ -20,6 +20,10 @@ vec3 skyColour(vec3 d) {
   return c + vec3(1.0, 0.95, 0.85) * (0.12 * s32 + 3.0 * smoothstep(0.9985, 0.9995, sun));
 }
 
+float windowDepth(float depth, vec2 depth_proj) {
+  return depth >= kFar ? 1.0 : clamp(0.5 * (depth_proj.x * -depth + depth_proj.y) / depth + 0.5, 0.0, 1.0);
+}
+
 vec3 encodeMetres(float metres) {
   uint v = uint(clamp(metres, 0.0, 255.99) * 65536.0 + 0.5);
   return vec3(float((v >> 16) & 255u), float((v >> 8) & 255u), float(v & 255u)) / 255.0;

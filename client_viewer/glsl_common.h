@@ -11,6 +11,8 @@ namespace viewer {
 //   kSunDirection            the one light, world space, towards the sun
 //   vec3 skyColour(vec3 d)   the procedural environment seen along world direction d
 //   vec3 encodeMetres(float) the 24-bit fixed-point debug encoding of render_settings.h
+//   float windowDepth(float metres, vec2 depth_proj)  depth along the view axis -> depth buffer
+//                            value; depth_proj = projection (2,2), (2,3); kFar -> 1
 extern const char* const kGlslCommon;
 
 // The parts joined in order (each a complete line or block).

@@ -148,17 +148,18 @@ void SceneBackdrop::setGeometry(const SceneGeometry& g) {
   stale_ = true;
 }
 
-void SceneBackdrop::update(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection, int width, int height,
+bool SceneBackdrop::update(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection, int width, int height,
                            const FullscreenTriangle& triangle) {
   if (!stale_ && width == target_.width() && height == target_.height() && view == drawn_view_ &&
       projection == drawn_projection_) {
-    return;
+    return false;
   }
   target_.bind(width, height);
   draw(view, projection, triangle);
   drawn_view_ = view;
   drawn_projection_ = projection;
   stale_ = false;
+  return true;
 }
 
 void SceneBackdrop::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,

@@ -21,8 +21,8 @@ class SceneBackdrop {
   // The geometry of the frame being shown (a few obstacles; extra ones are left out).
   void setGeometry(const SceneGeometry& geometry);
   // Brings the pictures up to date for this camera and size (draws only when something changed;
-  // changes the bound framebuffer and viewport when it does).
-  void update(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection, int width, int height,
+  // changes the bound framebuffer and viewport when it does). True when it drew.
+  bool update(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection, int width, int height,
               const FullscreenTriangle& triangle);
   GLuint colour() const { return target_.texture(0); }
   GLuint depth() const { return target_.texture(1); }  // metres along the view axis; kFar: only sky

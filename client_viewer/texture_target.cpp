@@ -8,9 +8,10 @@ TextureTarget::~TextureTarget() { release(); }
 
 void TextureTarget::release() {
   if (!textures_.empty()) glDeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
+  if (depth_ != 0) glDeleteRenderbuffers(1, &depth_);
   if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
   textures_.clear();
-  framebuffer_ = 0;
+  depth_ = framebuffer_ = 0;
   width_ = height_ = 0;
 }
 
@@ -35,6 +36,12 @@ void TextureTarget::allocate(int width, int height) {
     draw_buffers.push_back(attachment);
   }
   glDrawBuffers(static_cast<GLsizei>(draw_buffers.size()), draw_buffers.data());
+  if (with_depth_) {
+    glGenRenderbuffers(1, &depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  }
   glBindTexture(GL_TEXTURE_2D, 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     throw std::runtime_error("fluid framebuffer is incomplete (float colour targets unsupported?)");
@@ -43,10 +50,12 @@ void TextureTarget::allocate(int width, int height) {
   height_ = height;
 }
 
-void TextureTarget::bind(int width, int height) {
-  if (width != width_ || height != height_ || framebuffer_ == 0) allocate(width, height);
+bool TextureTarget::bind(int width, int height) {
+  const bool reallocate = width != width_ || height != height_ || framebuffer_ == 0;
+  if (reallocate) allocate(width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glViewport(0, 0, width_, height_);
+  return reallocate;
 }
 
 void bindTexture(GLint location, int unit, GLuint texture) {

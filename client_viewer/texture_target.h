@@ -16,14 +16,16 @@ struct TextureSpec {
 
 class TextureTarget {
  public:
-  explicit TextureTarget(std::vector<TextureSpec> attachments) : specs_(std::move(attachments)) {}
+  // `depth`: also a depth buffer (not a texture), which passes may test against.
+  explicit TextureTarget(std::vector<TextureSpec> attachments, bool depth = false)
+      : specs_(std::move(attachments)), with_depth_(depth) {}
   ~TextureTarget();
   TextureTarget(const TextureTarget&) = delete;
   TextureTarget& operator=(const TextureTarget&) = delete;
 
   // (Re)allocates when the size changed; binds the framebuffer, every attachment drawn to, and sets
-  // the viewport.
-  void bind(int width, int height);
+  // the viewport. True when it (re)allocated: the contents are undefined then.
+  bool bind(int width, int height);
   GLuint texture(std::size_t attachment) const { return textures_[attachment]; }
   int width() const { return width_; }
   int height() const { return height_; }
@@ -33,6 +35,8 @@ class TextureTarget {
   void release();
   std::vector<TextureSpec> specs_;
   std::vector<GLuint> textures_;
+  bool with_depth_;
+  GLuint depth_ = 0;
   GLuint framebuffer_ = 0;
   int width_ = 0;
   int height_ = 0;
