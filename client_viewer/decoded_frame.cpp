@@ -153,6 +153,13 @@ bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& e
       out.speeds[i] = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
     }
   }
+  const std::string& counts = frame.neighbor_counts();
+  if (!counts.empty() && counts.size() != n) {
+    error = "neighbor_counts holds " + std::to_string(counts.size()) + " bytes, expected none or one per particle (" +
+            std::to_string(n) + ")";
+    return false;
+  }
+  out.neighbor_counts.assign(counts.begin(), counts.end());
   out.radius_small = frame.radius_small();
   out.radius_large = frame.radius_large();
   if (!std::isfinite(out.radius_small) || !std::isfinite(out.radius_large) || out.radius_small < 0.0f ||

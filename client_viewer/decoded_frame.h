@@ -74,8 +74,9 @@ struct DecodedFrame {
 
   // Per particle
   std::vector<Vec3f> positions;
-  std::vector<std::uint8_t> classes;  // kClassSmall / kClassLarge
-  std::vector<float> speeds;          // empty when the frame carries no velocities
+  std::vector<std::uint8_t> classes;          // kClassSmall / kClassLarge
+  std::vector<float> speeds;                  // empty when the frame carries no velocities
+  std::vector<std::uint8_t> neighbor_counts;  // empty when the frame carries none (server option)
 
   // Local facts
   std::chrono::steady_clock::time_point arrival;  // when the bytes left the socket
@@ -87,7 +88,7 @@ struct DecodedFrame {
 // Fills `out` from `frame`. On failure returns false, sets `error` to a human-readable reason and
 // leaves `out` in an unspecified state (callers decode into a fresh object and keep their last good
 // frame). Checks: protocol version, encoding, byte lengths against particle_count, class values,
-// finite positions, radii and quantization box.
+// finite positions, radii and quantization box, optional per-particle fields one entry per particle.
 bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error);
 
 // Parses wire bytes and decodes; the same contract as decodeFrame.

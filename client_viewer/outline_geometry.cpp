@@ -68,8 +68,9 @@ void appendCylinder(LineList& lines, const CylinderShape& cyl, float y_floor, fl
   }
 }
 
-void appendGeometry(LineList& lines, const SceneGeometry& g) {
+void appendGeometry(LineList& lines, const SceneGeometry& g, bool obstacles) {
   if (g.has_box) appendBox(lines, g.box_min, g.box_max, kBoxColour);
+  if (!obstacles) return;
   for (const auto& s : g.spheres) appendSphere(lines, s, kObstacleColour);
   // Cylinders run floor to roof of the box; without a box give them a nominal metre.
   const float floor = g.has_box ? g.box_min.y : 0.0f;

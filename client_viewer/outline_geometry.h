@@ -24,7 +24,8 @@ void appendBox(LineList& lines, const Vec3f& lo, const Vec3f& hi, Rgb colour);
 void appendSphere(LineList& lines, const SphereShape& sphere, Rgb colour);
 // A vertical cylinder from y_floor to y_roof: two circles and four vertical lines.
 void appendCylinder(LineList& lines, const CylinderShape& cylinder, float y_floor, float y_roof, Rgb colour);
-void appendGeometry(LineList& lines, const SceneGeometry& geometry);
+// The box and, unless `obstacles` is false (fluid mode draws them solid), the obstacles.
+void appendGeometry(LineList& lines, const SceneGeometry& geometry, bool obstacles = true);
 
 // A circle on the screen given as the protocol does: centre normalized 0..1 with the origin at the
 // top left, radius as a fraction of the viewport width. Output in NDC (x right, y up), z = 0.

@@ -1,15 +1,12 @@
 #include "particle_renderer.h"
 
-#include <algorithm>
+#include "glsl_common.h"
 
 namespace viewer {
 
 namespace {
 
-const char* kVertexShader = R"(#version 330 core
-layout(location = 0) in vec2 a_corner;   // quad corner, -1..1
-layout(location = 1) in vec3 a_centre;   // particle centre, world
-layout(location = 2) in vec2 a_attrs;    // size class (0 SMALL, 1 LARGE), speed
+const char* kVertexShader = R"(
 uniform mat4 u_view;
 uniform mat4 u_projection;
 uniform float u_radius[2];
@@ -17,6 +14,8 @@ uniform int u_colour_mode;   // 0 class, 1 speed
 uniform float u_max_speed;
 out vec2 v_corner;
 flat out vec3 v_colour;
+flat out float v_radius;
+flat out float v_centre_z;
 
 vec3 speedColour(float t) {  // blue -> cyan -> yellow -> red
   t = clamp(t, 0.0, 1.0);
@@ -30,6 +29,8 @@ void main() {
   float radius = u_radius[size_class];
   vec4 centre = u_view * vec4(a_centre, 1.0);
   v_corner = a_corner;
+  v_radius = radius;
+  v_centre_z = centre.z;
   if (u_colour_mode == 1) {
     v_colour = speedColour(a_attrs.y / u_max_speed);
   } else {
@@ -43,14 +44,25 @@ void main() {
 }
 )";
 
-const char* kFragmentShader = R"(#version 330 core
+const char* kFragmentShader = R"(
 in vec2 v_corner;
 flat in vec3 v_colour;
+flat in float v_radius;
+flat in float v_centre_z;
+uniform int u_debug;  // 0 shaded, 1 normals, 2 depth (render_settings.h)
 out vec4 o_colour;
 void main() {
   float d2 = dot(v_corner, v_corner);
   if (d2 > 1.0) discard;
   vec3 normal = vec3(v_corner, sqrt(1.0 - d2));
+  if (u_debug == 1) {
+    o_colour = vec4(normal * 0.5 + 0.5, 1.0);
+    return;
+  }
+  if (u_debug == 2) {
+    o_colour = vec4(encodeMetres(-v_centre_z - v_radius * normal.z), 1.0);
+    return;
+  }
   vec3 light = normalize(vec3(0.35, 0.6, 1.0));
   float diffuse = max(dot(normal, light), 0.0);
   float specular = pow(max(dot(normal, normalize(light + vec3(0.0, 0.0, 1.0))), 0.0), 40.0);
@@ -58,72 +70,24 @@ void main() {
 }
 )";
 
-constexpr float kQuad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
-
 }  // namespace
 
-ParticleRenderer::ParticleRenderer() : program_(kVertexShader, kFragmentShader, "particles") {
-  glGenVertexArrays(1, &vao_);
-  glGenBuffers(1, &quad_buffer_);
-  glGenBuffers(1, &centre_buffer_);
-  glGenBuffers(1, &attribute_buffer_);
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, quad_buffer_);
-  glBufferData(GL_ARRAY_BUFFER, sizeof(kQuad), kQuad, GL_STATIC_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, centre_buffer_);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glVertexAttribDivisor(1, 1);
-  glBindBuffer(GL_ARRAY_BUFFER, attribute_buffer_);
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glVertexAttribDivisor(2, 1);
-  glBindVertexArray(0);
-}
+ParticleRenderer::ParticleRenderer()
+    : program_(glslSource({kGlslCommon, kGlslParticleAttributes, kVertexShader}).c_str(),
+               glslSource({kGlslCommon, kFragmentShader}).c_str(), "particles") {}
 
-ParticleRenderer::~ParticleRenderer() {
-  glDeleteBuffers(1, &attribute_buffer_);
-  glDeleteBuffers(1, &centre_buffer_);
-  glDeleteBuffers(1, &quad_buffer_);
-  glDeleteVertexArrays(1, &vao_);
-}
-
-void ParticleRenderer::upload(const DecodedFrame& frame) {
-  const std::size_t n = frame.particleCount();
-  count_ = static_cast<GLsizei>(n);
-  radius_[0] = frame.radius_small;
-  radius_[1] = frame.radius_large;
-  has_speed_ = !frame.speeds.empty();
-  max_speed_ = 1e-3f;
-  staging_.resize(2 * n);
-  for (std::size_t i = 0; i < n; ++i) {
-    staging_[2 * i] = static_cast<float>(frame.classes[i]);
-    staging_[2 * i + 1] = has_speed_ ? frame.speeds[i] : 0.0f;
-    if (has_speed_) max_speed_ = std::max(max_speed_, frame.speeds[i]);
-  }
-  // Orphan and refill: the driver may still be drawing from the previous contents.
-  glBindBuffer(GL_ARRAY_BUFFER, centre_buffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n * sizeof(Vec3f)), frame.positions.data(), GL_STREAM_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, attribute_buffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(staging_.size() * sizeof(float)), staging_.data(),
-               GL_STREAM_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
-void ParticleRenderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection, ColourMode mode) const {
-  if (count_ == 0) return;
+void ParticleRenderer::draw(const ParticleBuffers& particles, const Eigen::Matrix4f& view,
+                            const Eigen::Matrix4f& projection, ColourMode mode, RenderDebug debug) const {
+  if (particles.count() == 0) return;
   glUseProgram(program_.id());
   glUniformMatrix4fv(program_.uniform("u_view"), 1, GL_FALSE, view.data());
   glUniformMatrix4fv(program_.uniform("u_projection"), 1, GL_FALSE, projection.data());
-  glUniform1fv(program_.uniform("u_radius"), 2, radius_);
+  glUniform1fv(program_.uniform("u_radius"), 2, particles.radii());
   // Without velocities in the frame speed colouring has nothing to show: fall back to classes.
-  glUniform1i(program_.uniform("u_colour_mode"), mode == ColourMode::kSpeed && has_speed_ ? 1 : 0);
-  glUniform1f(program_.uniform("u_max_speed"), max_speed_);
-  glBindVertexArray(vao_);
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
-  glBindVertexArray(0);
+  glUniform1i(program_.uniform("u_colour_mode"), mode == ColourMode::kSpeed && particles.hasSpeed() ? 1 : 0);
+  glUniform1f(program_.uniform("u_max_speed"), particles.maxSpeed());
+  glUniform1i(program_.uniform("u_debug"), static_cast<int>(debug));
+  particles.draw();
 }
 
 }  // namespace viewer

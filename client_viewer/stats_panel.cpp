@@ -66,7 +66,8 @@ void StatsPanel::togglePause(const DecodedFrame* frame) {
   client_.sendControl(std::move(request));
 }
 
-void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates, bool mouse_gaze) {
+void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates, bool mouse_gaze,
+                      RenderMode& render) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.75f);
   if (!ImGui::Begin("sph_viewer", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
@@ -74,6 +75,13 @@ void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, cons
     return;
   }
   ImGui::Text("viewer  %.1f fps, arrival->pixels %.1f ms", rates.render_fps, rates.arrival_to_pixels_ms);
+  int mode = static_cast<int>(render);
+  ImGui::Text("render ");
+  ImGui::SameLine();
+  ImGui::RadioButton("fluid", &mode, static_cast<int>(RenderMode::kFluid));
+  ImGui::SameLine();
+  ImGui::RadioButton("particles", &mode, static_cast<int>(RenderMode::kParticles));
+  render = static_cast<RenderMode>(mode);
   ImGui::Text(
       "frames  %llu received, %llu skipped, %llu rejected", static_cast<unsigned long long>(stats.frames_received),
       static_cast<unsigned long long>(stats.frames_skipped), static_cast<unsigned long long>(stats.frames_rejected));

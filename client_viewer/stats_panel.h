@@ -7,6 +7,7 @@
 
 #include "decoded_frame.h"
 #include "network_client.h"
+#include "render_settings.h"
 
 namespace viewer {
 
@@ -20,7 +21,9 @@ class StatsPanel {
  public:
   explicit StatsPanel(NetworkClient& client) : client_(client) {}
 
-  void draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates, bool mouse_gaze);
+  // `render` is the viewer's render mode, which the panel's switch changes.
+  void draw(const DecodedFrame* frame, const NetworkStats& stats, const ViewerRates& rates, bool mouse_gaze,
+            RenderMode& render);
   // Puts the latest reply (or its error) into the panel's message line.
   void showReply(const gsph::v1::ControlReply& reply);
   void togglePause(const DecodedFrame* frame);

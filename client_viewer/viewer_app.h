@@ -1,5 +1,6 @@
 // The window and its loop: takes the newest frame from the network thread, draws it offscreen
-// (particles, outlines, gaze overlay, panel), shows it, and feeds camera pose and mouse gaze back.
+// (water or particles, outlines, gaze overlay, panel), shows it, and feeds camera pose and mouse
+// gaze back.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -10,9 +11,11 @@
 #include <memory>
 
 #include "camera_input.h"
+#include "fluid_renderer.h"
 #include "line_renderer.h"
 #include "network_client.h"
 #include "orbit_camera.h"
+#include "particle_buffers.h"
 #include "particle_renderer.h"
 #include "render_target.h"
 #include "stats_panel.h"
@@ -52,6 +55,7 @@ class ViewerApp {
   void sendPose(const Viewport& vp);
   void sendGaze(const Viewport& vp, Clock::time_point now);
   void drawScene(const Viewport& vp);
+  void drawOutlines();
   void drawPanel(Clock::time_point now);
   void writeSnapshot();
   void countRender(bool new_frame, Clock::time_point now);
@@ -63,7 +67,9 @@ class ViewerApp {
   WindowEvents events_;  // installed before ImGui, which chains to its callbacks
   CameraInput input_;
   ImGuiSession imgui_;
+  ParticleBuffers particle_buffers_;
   ParticleRenderer particles_;
+  FluidRenderer fluid_;
   LineRenderer lines_;
   RenderTarget target_;
   StatsPanel panel_;
@@ -72,8 +78,10 @@ class ViewerApp {
   OrbitCamera initial_camera_;
   bool camera_ready_ = false;
   bool show_panel_ = true;
+  RenderMode render_mode_ = RenderMode::kFluid;  // the panel switches it
   std::shared_ptr<const DecodedFrame> frame_;
   LineList world_lines_, overlay_lines_;
+  LineList box_lines_;  // fluid mode: its backdrop draws the obstacles solid
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
   TimingReport report_;

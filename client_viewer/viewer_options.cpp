@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <map>
 
 #include "net/curve_cli.h"
@@ -40,9 +41,24 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
           ->excludes("--mouse-gaze");
   app.add_flag("!--no-panel", o.panel, "Hide the statistics and control panel");
   app.add_flag("!--no-vsync", o.vsync, "Render as fast as possible instead of at the display rate");
+  std::map<std::string, RenderMode> renders{{"fluid", RenderMode::kFluid}, {"particles", RenderMode::kParticles}};
+  app.add_option("--render", o.render,
+                 "fluid (a liquid surface, the default) or particles (spheres by size class, for research)")
+      ->transform(CLI::CheckedTransformer(renders, CLI::ignore_case));
+  std::map<std::string, RenderDebug> debugs{{"none", RenderDebug::kNone},
+                                            {"normals", RenderDebug::kNormals},
+                                            {"depth", RenderDebug::kDepth},
+                                            {"thickness", RenderDebug::kThickness}};
+  app.add_option("--render-debug", o.render_debug,
+                 "Encode a pass instead of shading: normals (view space as RGB), depth or thickness (metres as "
+                 "24-bit fixed point; thickness in fluid mode only); see README")
+      ->transform(CLI::CheckedTransformer(debugs, CLI::ignore_case));
+  app.add_option("--fluid-scale", o.fluid_scale,
+                 "Fluid passes at 1/N of the resolution each way (default: 2 on software GL, 1 on a GPU)")
+      ->check(CLI::Range(1, 4));
   std::map<std::string, ColourMode> colours{{"class", ColourMode::kSizeClass}, {"speed", ColourMode::kSpeed}};
   app.add_option("--colour,--color", o.colour,
-                 "Particle colour: class (SMALL blue, LARGE red) or speed (needs velocities in frames)")
+                 "Particles mode colour: class (SMALL blue, LARGE red) or speed (needs velocities in frames)")
       ->transform(CLI::CheckedTransformer(colours, CLI::ignore_case));
   std::array<float, 3> eye{}, target{};
   auto* eye_opt = app.add_option("--eye", eye, "Camera eye x y z (default: the scene's camera)");
@@ -56,6 +72,10 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   app.add_option("--frames", o.frames, "Server frames to show before the snapshot or exit (0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  auto* at_opt = app.add_option("--snapshot-at", o.snapshot_at_s,
+                                "With --snapshot: take it at the first frame of at least this sim time (s), not "
+                                "after --frames")
+                     ->check(CLI::NonNegativeNumber);
   auto* timeout_opt =
       app.add_option("--timeout", o.timeout_s, "Give up after this many seconds (exit 3; default 30 with --snapshot)")
           ->check(CLI::NonNegativeNumber);
@@ -78,11 +98,15 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
     std::fprintf(stderr, "sph_viewer: --eye and --target go together\n");
     return 2;
   }
+  if (o.render_debug == RenderDebug::kThickness && o.render != RenderMode::kFluid) {
+    std::fprintf(stderr, "sph_viewer: --render-debug thickness needs --render fluid\n");
+    return 2;
+  }
   if (o.viewer_id.empty()) o.viewer_id = "viewer-" + std::to_string(::getpid());
   if (!o.snapshot.empty()) {
     o.visible = visible_opt->count() > 0;
     if (timeout_opt->count() == 0) o.timeout_s = 30.0;
-    if (o.frames == 0) o.frames = 1;
+    if (o.frames == 0 && at_opt->count() == 0) o.frames = 1;
   }
   return std::nullopt;
 }

@@ -7,6 +7,7 @@
 
 #include "network_client.h"
 #include "particle_renderer.h"
+#include "render_settings.h"
 
 namespace viewer {
 
@@ -19,17 +20,21 @@ struct ViewerOptions {
   std::optional<std::array<float, 2>> gaze_at;  // a fixed gaze point (demos, screenshots)
   bool panel = true;
   bool vsync = true;
-  ColourMode colour = ColourMode::kSizeClass;
+  RenderMode render = RenderMode::kFluid;
+  RenderDebug render_debug = RenderDebug::kNone;
+  int fluid_scale = 0;  // fluid passes at 1 / this resolution; 0: by the GL (defaultFluidScale())
+  ColourMode colour = ColourMode::kSizeClass;  // particles mode
   // Camera: the scene's pose from the first frame unless --eye/--target are given.
   std::optional<std::array<float, 3>> eye;
   std::optional<std::array<float, 3>> target;
   float fov_y_degrees = 45.0f;
   // Headless / scripted runs
-  std::string snapshot;    // PNG path; implies a hidden window unless --visible
-  bool visible = true;     // resolved: false for --snapshot unless --visible was given
-  int frames = 0;          // server frames to show before the snapshot / exit (0: run until closed)
-  double timeout_s = 0.0;  // give up after this long (0: never; --snapshot defaults to 30)
-  bool report = false;     // print render rate and frame-arrival-to-pixels figures on exit
+  std::string snapshot;         // PNG path; implies a hidden window unless --visible
+  bool visible = true;          // resolved: false for --snapshot unless --visible was given
+  int frames = 0;               // server frames to show before the snapshot / exit (0: run until closed)
+  double snapshot_at_s = -1.0;  // with --snapshot: at the first frame of this sim time instead (< 0: off)
+  double timeout_s = 0.0;       // give up after this long (0: never; --snapshot defaults to 30)
+  bool report = false;          // print render rate and frame-arrival-to-pixels figures on exit
 };
 
 // Parses argv. Returns std::nullopt to go on, or an exit code (0 after --help, 2 on a bad option)

@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# Screenshots of the five scenes with the gaze method: docs/screenshots/<scene>_gaze.png.
-# Starts sph_server per scene on free loopback ports, lets it run, and has sph_viewer (headless,
-# a hidden window under Xvfb) send a fixed gaze point and take the picture.
-# Usage: docs/make_screenshots.sh [build-dir] [frames-per-scene]
+# Screenshots of the five scenes with the gaze method: docs/screenshots/<scene>_fluid.png in fluid
+# mode (the default render), and docs/screenshots/dambreak_particles.png, the dam break in particles
+# mode (SMALL blue, LARGE red) from the same server. (The <scene>_gaze.png pictures beside them are
+# the particles-mode pictures of the script before fluid mode; it no longer makes them.) Starts sph_server per scene on free loopback
+# ports (with --neighbor-counts, so spray shows as droplets), and has sph_viewer (headless, a hidden
+# window under Xvfb) send a fixed gaze point and take the picture at the first frame it draws at or
+# after a chosen sim time (the server runs in real time). The fluid pictures use --fluid-scale 1
+# (full resolution; the default on software GL is half).
+# Usage: docs/make_screenshots.sh [build-dir]
 set -euo pipefail
 build=${1:-build}
-frames=${2:-150}
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [ -z "${DISPLAY:-}" ]; then
   exec xvfb-run -a -s "-screen 0 1920x1080x24" "$0" "$@"
@@ -14,22 +18,38 @@ mkdir -p "$root/docs/screenshots"
 declare -A gaze=(  # where a person would look: at the water
   [dambreak]="0.35 0.62" [dambreak_obstacles]="0.35 0.62" [large_box]="0.5 0.62"
   [small_box]="0.5 0.6" [wave]="0.5 0.62")
+declare -A moment=(  # sim seconds: the surge, the flow past the obstacles, the spreading sheet, waves
+  [dambreak]=1.6 [dambreak_obstacles]=2.0 [large_box]=0.7 [small_box]=1.0 [wave]=3.0)
+server=
+trap '[ -n "$server" ] && kill $server 2>/dev/null || true' EXIT
 for scene in dambreak dambreak_obstacles large_box small_box wave; do
   log=$(mktemp)
-  "$build/bin/sph_server" --scene "$scene" --method gaze --frames-endpoint 'tcp://127.0.0.1:*' \
+  "$build/bin/sph_server" --scene "$scene" --method gaze --neighbor-counts --frames-endpoint 'tcp://127.0.0.1:*' \
     --gaze-endpoint 'tcp://127.0.0.1:*' --pose-endpoint 'tcp://127.0.0.1:*' \
     --control-endpoint 'tcp://127.0.0.1:*' --status-interval 0 >"$log" 2>&1 &
   server=$!
-  trap 'kill $server 2>/dev/null || true' EXIT
   for _ in $(seq 100); do grep -q "endpoint control" "$log" && break; sleep 0.1; done
   endpoint() { grep -o "endpoint $1 tcp://[0-9.:]*" "$log" | awk '{print $3}'; }
-  out="$root/docs/screenshots/${scene}_gaze.png"
-  # shellcheck disable=SC2086
-  "$build/bin/sph_viewer" --frames-endpoint "$(endpoint frames)" --gaze-endpoint "$(endpoint gaze)" \
-    --pose-endpoint "$(endpoint pose)" --control-endpoint "$(endpoint control)" \
-    --gaze-at ${gaze[$scene]} --snapshot "$out" --frames "$frames" --timeout 120 --width 1280 --height 720
+  shoot() {  # $1 output, then viewer options
+    local out=$1
+    shift
+    # shellcheck disable=SC2086
+    "$build/bin/sph_viewer" --frames-endpoint "$(endpoint frames)" --gaze-endpoint "$(endpoint gaze)" \
+      --pose-endpoint "$(endpoint pose)" --control-endpoint "$(endpoint control)" --viewer-id "shot-$(basename "$out")" \
+      --gaze-at ${gaze[$scene]} --snapshot "$out" --snapshot-at "${moment[$scene]}" --timeout 120 \
+      --width 1280 --height 720 "$@"
+    echo "make_screenshots: $out"
+  }
+  shoot "$root/docs/screenshots/${scene}_fluid.png" --fluid-scale 1 &
+  viewers=($!)
+  if [ "$scene" = dambreak ]; then
+    # The particles picture beside the fluid one: the same server, the same chosen sim time.
+    shoot "$root/docs/screenshots/dambreak_particles.png" --render particles &
+    viewers+=($!)
+  fi
+  wait "${viewers[@]}"
   kill "$server" 2>/dev/null || true
   wait "$server" 2>/dev/null || true
+  server=
   rm -f "$log"
-  echo "make_screenshots: $out"
 done

@@ -61,6 +61,8 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->capture_default_str();
   cli.add_flag("--quantized", sim.settings.quantized, "16-bit positions relative to the box (6 bytes per particle)");
   cli.add_flag("--velocities", sim.velocities, "add velocities (3 float32) to every frame");
+  cli.add_flag("--neighbor-counts", sim.neighbor_counts,
+               "add each particle's neighbour count (1 byte) to every frame (sph_viewer draws spray by it)");
   cli.add_option("--threads", sim.threads, "OpenMP threads for the step")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();

@@ -37,6 +37,7 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
       control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }},
       pacer_(options.settings.publish_hz, Clock::now()),
       refusal_log_(options.log_interval) {
+  encoder_.setNeighborCounts(options.neighbor_counts);
   session_.load(options.scene, options.method, /*allow_paths=*/true);
   net::fromScreenCamera(session_.camera(), camera_msg_);
   camera_msg_.set_viewer_id("scene");

@@ -33,6 +33,7 @@ struct SimLoopOptions {
   std::map<std::string, double> adaptive_overrides;
   RunSettings settings;
   bool velocities = false;
+  bool neighbor_counts = false;  // per-particle neighbour counts in frames (viewer's spray)
   int threads = 2;
   std::string camera_source;       // empty: the most recent pose from any viewer
   std::int64_t max_steps = 0;      // stop after this many steps (0: run until stopped)

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <span>
 
 namespace net {
 namespace {
@@ -156,6 +157,11 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   } else {
     f.clear_velocities();
   }
+  if (neighbor_counts_) {
+    encodeNeighborCounts(sim);
+  } else {
+    f.clear_neighbor_counts();
+  }
   f.set_send_time_us(systemTimeUs());
   return f;
 }
@@ -190,6 +196,21 @@ void FrameEncoder::encodePositions(const sph::Simulation& sim) {
       // NaN compares false both ways and lands on 0, as does anything below the box.
       q[3 * i + a] = static_cast<std::uint16_t>(v > 0.0f ? std::min(v, static_cast<float>(kQuantLevels)) : 0.0f);
     }
+  }
+}
+
+void FrameEncoder::encodeNeighborCounts(const sph::Simulation& sim) {
+  const std::size_t n = sim.particles().size();
+  const std::span<const std::uint32_t> counts = sim.grid().neighborCounts();
+  std::string* out = frame_.mutable_neighbor_counts();
+  out->resize(n);
+  // The counts are those of the step's neighbour search, indexed as the particles were then. The
+  // adaptive step runs after it: a split appends children past the counted range and a merge moves
+  // the last particles into the holes, so those few particles carry another particle's count, and
+  // the appended ones (and all before the first step) 255, which a viewer takes as "not spray".
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t c = i < counts.size() ? counts[i] : 255u;
+    (*out)[i] = static_cast<char>(std::min<std::uint32_t>(c, 255u));
   }
 }
 

@@ -53,6 +53,8 @@ class FrameEncoder {
   void setEncoding(PositionEncoding encoding) { encoding_ = encoding; }
   PositionEncoding encoding() const { return encoding_; }
   void setVelocities(bool on) { velocities_ = on; }
+  // Off by default: the field then costs neither the encoder nor the wire anything.
+  void setNeighborCounts(bool on) { neighbor_counts_ = on; }
 
   // Fills the reused Frame from `sim` and `info`; the returned reference stays valid until the next call.
   const gsph::v1::Frame& encode(const sph::Simulation& sim, const FrameInfo& info);
@@ -61,9 +63,11 @@ class FrameEncoder {
 
  private:
   void encodePositions(const sph::Simulation& sim);
+  void encodeNeighborCounts(const sph::Simulation& sim);
 
   PositionEncoding encoding_;
   bool velocities_;
+  bool neighbor_counts_ = false;
   gsph::v1::Frame frame_;
 };
 

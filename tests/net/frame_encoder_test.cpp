@@ -2,6 +2,7 @@
 // counts, geometry, and reuse of one Frame object across frames of different sizes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "net/frame_encoder.h"
@@ -76,6 +77,29 @@ TEST(FrameEncoder, ReusedFrameFollowsAShrinkingParticleSet) {
   EXPECT_EQ(f.velocities().size(), 12 * small.particles().size());
   EXPECT_EQ(f.size_classes().size(), small.particles().size());
   EXPECT_EQ(f.particle_count(), small.particles().size());
+}
+
+TEST(FrameEncoder, NeighborCountsOnlyWhenAskedAndAsTheGridCountedThem) {
+  sph::Simulation sim(testScene(), sph::SizeClass::Small);
+  sim.step();
+  net::FrameEncoder encoder;
+  encoder.encode(sim, {});
+  EXPECT_TRUE(roundTrip(encoder).neighbor_counts().empty());  // off by default
+  encoder.setNeighborCounts(true);
+  encoder.encode(sim, {});
+  const gsph::v1::Frame on = roundTrip(encoder);
+  const std::size_t n = sim.particles().size();
+  ASSERT_EQ(on.neighbor_counts().size(), n);
+  bool some_counted = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto expected = std::min<std::uint32_t>(sim.grid().neighborCount(i), 255u);
+    ASSERT_EQ(static_cast<std::uint8_t>(on.neighbor_counts()[i]), expected) << i;
+    some_counted = some_counted || expected > 0;
+  }
+  EXPECT_TRUE(some_counted);  // a resting pool: particles have neighbours
+  encoder.setNeighborCounts(false);
+  encoder.encode(sim, {});
+  EXPECT_TRUE(roundTrip(encoder).neighbor_counts().empty());
 }
 
 TEST(FrameEncoder, MethodValuesMapBothWays) {

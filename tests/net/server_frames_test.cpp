@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <omp.h>
+
+#include <algorithm>
 #include <functional>
+#include <optional>
 
 #include "net/frame_encoder.h"
 #include "net/input_validation.h"
@@ -24,17 +27,23 @@ sph::Simulation referenceRun(int steps) {
   return sim;
 }
 
-void expectFrameMatches(bool quantized) {
-  constexpr int kSteps = 5;
+// The frame of step `steps` from a server running the regular method free, its options first
+// changed by `configure`.
+std::optional<gsph::v1::Frame> frameOfStep(int steps, const std::function<void(app::ServerOptions&)>& configure) {
   auto options = net_test::testOptions(sph::Method::Regular);
   options.sim.settings.free_run = true;
-  options.sim.settings.quantized = quantized;
-  options.sim.max_steps = kSteps;
+  options.sim.max_steps = steps;
+  configure(options);
   auto server = net_test::startServer(options);
   zmq::context_t ctx;
   FrameSubscriber sub(ctx, server->endpoints().frames);
   // After max_steps the server keeps publishing the final state, so a late joiner still sees it.
-  auto frame = sub.waitFor([&](const gsph::v1::Frame& f) { return f.step() == kSteps; });
+  return sub.waitFor([&](const gsph::v1::Frame& f) { return f.step() == steps; });
+}
+
+void expectFrameMatches(bool quantized) {
+  constexpr int kSteps = 5;
+  auto frame = frameOfStep(kSteps, [&](app::ServerOptions& o) { o.sim.settings.quantized = quantized; });
   ASSERT_TRUE(frame);
   const sph::Simulation ref = referenceRun(kSteps);
   const sph::ParticleSet& p = ref.particles();
@@ -60,6 +69,26 @@ void expectFrameMatches(bool quantized) {
 TEST(ServerFrames, Float32FramesMatchTheLibraryState) { expectFrameMatches(false); }
 
 TEST(ServerFrames, QuantizedFramesMatchTheLibraryState) { expectFrameMatches(true); }
+
+// The regular method splits and merges nothing, so the counts are exactly the library's.
+TEST(ServerFrames, NeighborCountsOnlyWhenAsked) {
+  constexpr int kSteps = 3;
+  for (const bool asked : {false, true}) {
+    auto frame = frameOfStep(kSteps, [&](app::ServerOptions& o) { o.sim.neighbor_counts = asked; });
+    ASSERT_TRUE(frame);
+    if (!asked) {
+      EXPECT_TRUE(frame->neighbor_counts().empty());
+      continue;
+    }
+    const sph::Simulation ref = referenceRun(kSteps);
+    ASSERT_EQ(frame->neighbor_counts().size(), ref.particles().size());
+    for (std::size_t i = 0; i < ref.particles().size(); ++i) {
+      ASSERT_EQ(static_cast<std::uint8_t>(frame->neighbor_counts()[i]),
+                std::min<std::uint32_t>(ref.grid().neighborCount(i), 255u))
+          << "particle " << i;
+    }
+  }
+}
 
 // Every frame offered gets the next number; one the pipe drops (a descheduled network thread)
 // shows as a gap, so the test allows gaps but never a repeat or a step back, and needs some two

@@ -72,6 +72,20 @@ TEST(DecodedFrame, SpeedsFromVelocities) {
   EXPECT_NEAR(out.speeds[2], 0.2f, 1e-6f);
 }
 
+TEST(DecodedFrame, NeighborCountsWhenPresentOnePerParticle) {
+  FrameSpec spec = threeParticles();
+  DecodedFrame out;
+  std::string error;
+  ASSERT_TRUE(decodeFrame(makeFrame(spec, 1), out, error)) << error;
+  EXPECT_TRUE(out.neighbor_counts.empty());
+  spec.neighbor_counts = {0, 17, 255};
+  ASSERT_TRUE(decodeFrame(makeFrame(spec, 1), out, error)) << error;
+  EXPECT_EQ(out.neighbor_counts, (std::vector<std::uint8_t>{0, 17, 255}));
+  spec.neighbor_counts = {3, 4};
+  EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
+  EXPECT_NE(error.find("neighbor_counts"), std::string::npos);
+}
+
 TEST(DecodedFrame, RejectsWrongVersion) {
   auto frame = makeFrame(threeParticles(), 1);
   frame.set_protocol_version(2);

@@ -65,6 +65,9 @@ gsph::v1::Frame makeFrame(const FrameSpec& spec, std::uint64_t sequence) {
     }
     f.set_velocities(v);
   }
+  if (!spec.neighbor_counts.empty()) {
+    f.set_neighbor_counts(std::string(spec.neighbor_counts.begin(), spec.neighbor_counts.end()));
+  }
   if (spec.with_box) {
     setVec(f.mutable_geometry()->mutable_box()->mutable_min(), spec.box_lo, spec.box_lo, spec.box_lo);
     setVec(f.mutable_geometry()->mutable_box()->mutable_max(), spec.box_hi, spec.box_hi, spec.box_hi);

@@ -24,6 +24,7 @@ struct FrameSpec {
   bool with_gaze = false;
   float gaze_x = 0.5f, gaze_y = 0.5f, gaze_radius = 0.1f, gaze_ring = 0.0f;
   bool with_velocities = false;
+  std::vector<std::uint8_t> neighbor_counts;  // sent as given when not empty
 };
 
 gsph::v1::Frame makeFrame(const FrameSpec& spec, std::uint64_t sequence);

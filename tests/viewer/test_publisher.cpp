@@ -135,6 +135,7 @@ void TestServer::run() {
       --frames_left_;
       {
         std::lock_guard lock(mutex_);
+        frame_.set_sim_time(0.01 * static_cast<double>(sequence_));  // as makeFrame numbers them
         frame_.set_sequence(sequence_++);
         frame_.SerializeToString(&bytes);
       }

@@ -1,6 +1,7 @@
 // A stand-in server for the viewer tests: binds the four sockets the viewer connects to on
-// ephemeral loopback ports, publishes a given Frame over and over (new sequence each time), and
-// collects the CameraPoses and GazeSamples that arrive.
+// ephemeral loopback ports, publishes a given Frame over and over (new sequence each time, and sim
+// time 10 ms a sequence number, as makeFrame sets them), and collects the CameraPoses and
+// GazeSamples that arrive.
 #pragma once
 
 #include <atomic>

@@ -170,7 +170,8 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   auto server_a = std::make_unique<TestServer>(frame_a, "", 100, 20ms, 5);
   const std::string endpoint = server_a->framesEndpoint();
   auto viewer = startViewer(
-      viewerArgs(*server_a, "restart", {"--snapshot", dir + "/after.png", "--frames", "40", "--timeout", "150"}),
+      viewerArgs(*server_a, "restart",
+                 {"--snapshot", dir + "/after.png", "--frames", "40", "--timeout", "150", "--render", "particles"}),
       dir + "/viewer.log");
   // The viewer adopted A's camera: it has drawn A's frame.
   ASSERT_TRUE(server_a->waitForPose([&](const auto& p) { return matrixNear(p.view(), view, 1e-4); }, kWait))

@@ -1,5 +1,5 @@
-// Round trips with the real sph_server: the viewer's pose becomes the server's projection, and the
-// viewer's mouse gaze moves the refined (SMALL) region.
+// Round trips with the real sph_server: the viewer's pose becomes the server's projection, the
+// viewer's mouse gaze moves the refined (SMALL) region, and fluid mode draws the server's water.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,8 +28,9 @@ struct ServerEndpoints {
 // sph_server on free loopback ports; it logs the endpoints it bound.
 class ServerProcess {
  public:
-  // `scene_dir` empty: the shipped scenes.
-  ServerProcess(const std::string& dir, const std::string& scene, const std::string& scene_dir = "")
+  // `scene_dir` empty: the shipped scenes. `extra`: more server options.
+  ServerProcess(const std::string& dir, const std::string& scene, const std::string& scene_dir = "",
+                const std::vector<std::string>& extra = {})
       : log_(dir + "/server.log") {
     std::vector<std::string> args{SPH_SERVER_PATH,
                                   "--scene",
@@ -52,6 +53,7 @@ class ServerProcess {
       args.push_back("--scene-dir");
       args.push_back(scene_dir);
     }
+    args.insert(args.end(), extra.begin(), extra.end());
     process_ = std::make_unique<ChildProcess>(args, log_);
     const auto deadline = std::chrono::steady_clock::now() + kWait;
     while (std::chrono::steady_clock::now() < deadline && endpoints_.control.empty()) {
@@ -234,4 +236,34 @@ TEST(ViewerServerRoundTrip, MouseGazeMovesTheRefinedRegion) {
   }
   viewer->terminate();
   EXPECT_TRUE(viewer->waitExit(20s).has_value());
+}
+
+TEST(ViewerServerRoundTrip, FluidModeDrawsTheServersWaterWithItsNeighbourCounts) {
+  const std::string dir = scratchDir();
+  ServerProcess server(dir, "tiny_pool", SPH_NET_TEST_SCENE_DIR, {"--neighbor-counts"});
+  FrameWatcher frames(server.endpoints().frames);
+  gsph::v1::Frame frame;
+  ASSERT_TRUE(frames.waitFor([](const gsph::v1::Frame& f) { return f.particle_count() > 0; }, &frame)) << server.log();
+  EXPECT_EQ(frame.neighbor_counts().size(), frame.particle_count());
+  auto args = server.viewerArgs();
+  for (const char* a :
+       {"--viewer-id", "rt-fluid", "--width", "640",       "--height", "360",  "--no-panel", "--eye",
+        "0.2",         "0.45",     "0.55",    "--target",  "0.2",      "0.05", "0.2",        "--render-debug",
+        "depth",       "--frames", "3",       "--timeout", "150"}) {
+    args.push_back(a);
+  }
+  args.push_back("--snapshot");
+  args.push_back(dir + "/fluid.png");
+  auto viewer = startViewer(args, dir + "/viewer.log");
+  const auto code = viewer->waitExit(200s);
+  ASSERT_TRUE(code.has_value() && *code == 0) << readFile(dir + "/viewer.log");
+  viewer::RgbaImage image;
+  std::string error;
+  ASSERT_TRUE(viewer::readPng(dir + "/fluid.png", image, error)) << error;
+  // The pool is there as a surface (depth pixels are not the white of "no water").
+  int water = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) water += pixel(image, x, y).b != 255 || pixel(image, x, y).r != 255;
+  }
+  EXPECT_GT(water, image.width * image.height / 10);
 }

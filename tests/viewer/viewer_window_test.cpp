@@ -31,15 +31,17 @@ FrameSpec fourParticles() {
   return spec;
 }
 
+// Particles mode: these tests look at the size-class colours.
 std::vector<std::string> cameraArgs() {
-  return {"--eye",     "0",
-          "0",         "2.5",
-          "--target",  "0",
-          "0",         "0",
-          "--fov",     "45",
-          "--width",   std::to_string(kWidth),
-          "--height",  std::to_string(kHeight),
-          "--no-panel"};
+  return {"--eye",      "0",
+          "0",          "2.5",
+          "--target",   "0",
+          "0",          "0",
+          "--fov",      "45",
+          "--width",    std::to_string(kWidth),
+          "--height",   std::to_string(kHeight),
+          "--no-panel", "--render",
+          "particles"};
 }
 
 std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -154,6 +156,22 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
   EXPECT_TRUE(sameWithinOnePixel(images[1], images[0], where)) << "quantized pixel " << where << " unmatched";
 }
 
+// The test frames' sim time is 0.01 s per sequence number: 30 frames never reach 0.5 s, 100 do.
+TEST(ViewerWindow, SnapshotAtWaitsForTheSimTime) {
+  const std::string dir = scratchDir();
+  for (const std::uint64_t frames : {30u, 100u}) {
+    TestServer server(makeFrame(fourParticles(), 1), "", 1, std::chrono::milliseconds(20), frames);
+    const std::string tag = std::to_string(frames);
+    auto viewer =
+        startViewer(join(join(cameraArgs(), server.endpointArgs()),
+                         {"--snapshot", dir + "/at" + tag + ".png", "--snapshot-at", "0.5", "--timeout", "8"}),
+                    dir + "/viewer" + tag + ".log");
+    const auto code = viewer->waitExit(60s);
+    ASSERT_TRUE(code.has_value());
+    EXPECT_EQ(*code, frames < 50 ? 3 : 0) << readFile(dir + "/viewer" + tag + ".log");
+  }
+}
+
 TEST(ViewerWindow, WaitsForServerAndTimesOutWithAPicture) {
   const std::string dir = scratchDir();
   // An endpoint no server is on: a TCP port held bound but not listening, so connections are
@@ -180,14 +198,22 @@ TEST(ViewerOptions, HelpListsEveryOptionAndBadOptionsFail) {
   auto help = startViewer({"--help"}, dir + "/help.log");
   ASSERT_EQ(help->waitExit(20s), std::optional<int>(0));
   const std::string text = readFile(dir + "/help.log");
-  for (const char* option : {"--frames-endpoint", "--pose-endpoint", "--gaze-endpoint", "--control-endpoint",
-                             "--mouse-gaze", "--snapshot", "--frames", "--eye", "--target", "--report"}) {
+  for (const char* option :
+       {"--frames-endpoint", "--pose-endpoint", "--gaze-endpoint", "--control-endpoint", "--mouse-gaze", "--snapshot",
+        "--frames", "--eye", "--target", "--report", "--render", "--render-debug", "--fluid-scale"}) {
     EXPECT_NE(text.find(option), std::string::npos) << option;
   }
-  auto bad = startViewer({"--width", "-5"}, dir + "/bad.log");
-  const auto code = bad->waitExit(20s);
-  ASSERT_TRUE(code.has_value());
-  EXPECT_NE(*code, 0);
-  auto half_camera = startViewer({"--eye", "0", "0", "1"}, dir + "/bad2.log");
-  EXPECT_EQ(half_camera->waitExit(20s), std::optional<int>(2));
+  auto exitOf = [&dir](std::vector<std::string> args, const std::string& log) {
+    return startViewer(std::move(args), dir + "/" + log)->waitExit(20s);
+  };
+  // CLI11's own checks exit with its codes (not 0); the viewer's exit 2.
+  const auto bad_width = exitOf({"--width", "-5"}, "bad.log");
+  ASSERT_TRUE(bad_width.has_value());
+  EXPECT_NE(*bad_width, 0);
+  const auto bad_mode = exitOf({"--render", "voxels"}, "bad_mode.log");
+  ASSERT_TRUE(bad_mode.has_value());
+  EXPECT_NE(*bad_mode, 0);
+  EXPECT_EQ(exitOf({"--eye", "0", "0", "1"}, "half_camera.log"), std::optional<int>(2));
+  // Thickness is a fluid pass; particles mode has none to show.
+  EXPECT_EQ(exitOf({"--render", "particles", "--render-debug", "thickness"}, "thickness.log"), std::optional<int>(2));
 }

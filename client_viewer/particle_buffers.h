@@ -1,0 +1,54 @@
+// The newest frame's particles on the GPU, shared by both render modes and every pass that draws
+// them: a unit quad and, per particle (instanced), its centre and (size class, speed, neighbour
+// count). Uploaded once per frame.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <vector>
+
+#include "decoded_frame.h"
+
+namespace viewer {
+
+// Neighbour count given to every particle when the frame carries none: not spray.
+inline constexpr float kUnknownNeighbours = 255.0f;
+
+// What a vertex shader declares to read the particles: a_corner (the quad corner, -1..1),
+// a_centre (world) and a_attrs (size class 0 SMALL / 1 LARGE, speed, neighbours). No #version
+// line: put kGlslCommon (glsl_common.h) before it.
+extern const char* const kGlslParticleAttributes;
+
+class ParticleBuffers {
+ public:
+  ParticleBuffers();
+  ~ParticleBuffers();
+  ParticleBuffers(const ParticleBuffers&) = delete;
+  ParticleBuffers& operator=(const ParticleBuffers&) = delete;
+
+  void upload(const DecodedFrame& frame);
+  // One instanced quad per particle, with the program in use.
+  void draw() const;
+
+  GLsizei count() const { return count_; }
+  const float* radii() const { return radius_; }  // [SMALL, LARGE], metres
+  float largestRadius() const;                    // of the classes present in the frame
+  float maxSpeed() const { return max_speed_; }
+  bool hasSpeed() const { return has_speed_; }
+  bool hasNeighbourCounts() const { return has_counts_; }
+
+ private:
+  GLuint vao_ = 0;
+  GLuint quad_buffer_ = 0;
+  GLuint centre_buffer_ = 0;
+  GLuint attribute_buffer_ = 0;
+  GLsizei count_ = 0;
+  float radius_[2] = {0.0f, 0.0f};
+  bool has_class_[2] = {false, false};
+  float max_speed_ = 1.0f;
+  bool has_speed_ = false;
+  bool has_counts_ = false;
+  std::vector<float> staging_;  // reused between uploads
+};
+
+}  // namespace viewer
