@@ -66,7 +66,7 @@ class BoundaryVolume {
   // W'(r) / r and L2 = integral of z^2 W'(r) / r.
   std::array<Table, kSizeClassCount> plane_moment_, row_moment_, row_moment_along_;
   std::vector<std::array<Table, kSizeClassCount>> spheres_, cylinders_;  // Phi(D) per obstacle
-  std::vector<std::array<Table, kSizeClassCount>> cylinder_moments_;      // M_y(D) per cylinder
+  std::vector<std::array<Table, kSizeClassCount>> cylinder_moments_;     // M_y(D) per cylinder
   std::vector<float> sphere_radius_, cylinder_radius_;
   std::vector<Eigen::Vector3f> sphere_centres_;
   std::vector<Eigen::Vector2f> cylinder_axes_;  // x, z

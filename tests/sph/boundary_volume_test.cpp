@@ -15,7 +15,7 @@
 namespace {
 
 struct LatticeProbe {
-  double density;  // over rho0
+  double density;            // over rho0
   Eigen::Vector3d gradient;  // (sum_j m_j grad W_ij + rho0 grad Phi) / rho0, in 1 / m
 };
 
@@ -60,8 +60,18 @@ TEST(BoundaryVolume, RestingLatticeSitsAtRestDensityAtFacesEdgesAndCorners) {
   for (int c = 0; c < sph::kSizeClassCount; ++c) {
     // Gradient scale: |grad rho| / rho0 of a particle that lost half its neighbours.
     const double scale = 1.0 / setup.kernels[static_cast<std::size_t>(c)].h;
-    for (const auto& [i, j, k] : std::vector<std::array<int, 3>>{
-             {10, 10, 10}, {10, 0, 10}, {10, 1, 11}, {0, 0, 10}, {1, 0, 11}, {0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {1, 0, 1}, {1, 1, 2}, {0, 1, 1}, {0, 2, 0}}) {
+    for (const auto& [i, j, k] : std::vector<std::array<int, 3>>{{10, 10, 10},
+                                                                 {10, 0, 10},
+                                                                 {10, 1, 11},
+                                                                 {0, 0, 10},
+                                                                 {1, 0, 11},
+                                                                 {0, 0, 0},
+                                                                 {1, 1, 0},
+                                                                 {2, 0, 0},
+                                                                 {1, 0, 1},
+                                                                 {1, 1, 2},
+                                                                 {0, 1, 1},
+                                                                 {0, 2, 0}}) {
       SCOPED_TRACE(::testing::Message() << "class " << c << " lattice point " << i << "," << j << "," << k);
       const LatticeProbe p = probe(scene, setup, c, i, j, k);
       if (std::getenv("SPH_PRINT_PROBE")) {

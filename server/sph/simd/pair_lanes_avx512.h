@@ -22,7 +22,9 @@ struct Avx512Lanes {
   static M live(std::uint32_t left) { return lanes::liveLanes(left); }
   static I loadIndex(const std::uint32_t* p, M m) { return _mm512_maskz_loadu_epi32(m, p); }
   static F gather(M m, I j, const float* base) { return lanes::gather(m, j, base); }
-  static F gather3(M m, I j, const float* base, int axis) { return lanes::gather(m, lanes::tripleIndex(j), base + axis); }
+  static F gather3(M m, I j, const float* base, int axis) {
+    return lanes::gather(m, lanes::tripleIndex(j), base + axis);
+  }
   static M le(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
   static M lt(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
   static M neq(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_NEQ_OQ); }

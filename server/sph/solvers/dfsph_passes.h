@@ -33,17 +33,17 @@ struct DfsphArrays {
   const float* mass = nullptr;
   const float* support = nullptr;
   const std::uint8_t* class_index = nullptr;
-  const float* position = nullptr;    // packed x, y, z
+  const float* position = nullptr;  // packed x, y, z
   float* density = nullptr;
-  float* inverse_diagonal = nullptr;  // the density pass's
-  float* boundary_grad = nullptr;     // grad Phi_i (packed)
+  float* inverse_diagonal = nullptr;    // the density pass's
+  float* boundary_grad = nullptr;       // grad Phi_i (packed)
   float* boundary_wall_rate = nullptr;  // grad Phi_i . v_wall
   float* boundary_moment = nullptr;     // the hydrostatic moment M_i (packed, boundary_volume.h)
-  const float* field = nullptr;       // the change pass's u (packed)
-  bool with_wall_rate = true;         // subtract boundary_wall_rate (for velocities, not accelerations)
-  float* change = nullptr;            // the change pass's result
-  const float* stiffness = nullptr;   // k = p / rho^2, the acceleration pass's input
-  float* acceleration = nullptr;      // the acceleration pass's result (packed)
+  const float* field = nullptr;         // the change pass's u (packed)
+  bool with_wall_rate = true;           // subtract boundary_wall_rate (for velocities, not accelerations)
+  float* change = nullptr;              // the change pass's result
+  const float* stiffness = nullptr;     // k = p / rho^2, the acceleration pass's input
+  float* acceleration = nullptr;        // the acceleration pass's result (packed)
 };
 
 struct DfsphConstants {

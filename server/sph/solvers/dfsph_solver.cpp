@@ -96,7 +96,7 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
     // The pressure must undo this much: rho0 - rho_adv (density), -D(v) (divergence), where the
     // velocities compress; where they do not, it must leave the density as it is (a target of 0,
     // as SPlisHSPlasH clamps: an under-dense particle asks for no pull, and gets no pressure hole).
-    target_[i] = !counted        ? 0.0f
+    target_[i] = !counted         ? 0.0f
                  : density_target ? rho0 - std::max(p.density[i] + dt * change_[i], rho0)
                                   : -std::max(change_[i], 0.0f);
     stiffness_[i] = cold ? 0.0f : (target_[i] < 0.0f ? warm_factor * warm[i] : 0.0f);  // warm start (BK17 4.3)
@@ -104,7 +104,8 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   // The pressure acceleration a(k) changes the density after the step by dt^2 D(a) (its rate by
   // dt D(a)); Jacobi on A k = target, A's diagonal -dt^2 / inverse_diagonal (dfsph_passes.h).
   const float scale = density_target ? dt * dt : dt;
-  constants_.hydrostatic_gravity = density_target && !std::getenv("SPH_NO_HYDRO") ? static_cast<float>(std::abs(params.gravity)) : 0.0f;
+  constants_.hydrostatic_gravity =
+      density_target && !std::getenv("SPH_NO_HYDRO") ? static_cast<float>(std::abs(params.gravity)) : 0.0f;
   const float tolerance =
       static_cast<float>(density_target ? params.density_tolerance : params.divergence_tolerance / dt) * rho0;
   arrays_.field = acceleration_.data()->data();
@@ -122,7 +123,8 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
     }
     ++iteration;
     // BK17 runs at least two density iterations, one divergence iteration.
-    if (error / static_cast<double>(std::max<std::size_t>(n, 1)) <= tolerance && iteration >= (density_target ? 2 : 1)) {
+    if (error / static_cast<double>(std::max<std::size_t>(n, 1)) <= tolerance &&
+        iteration >= (density_target ? 2 : 1)) {
       break;
     }
   }

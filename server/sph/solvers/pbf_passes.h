@@ -36,7 +36,7 @@ struct PbfArrays {
   const float* mass = nullptr;
   const float* support = nullptr;
   const std::uint8_t* class_index = nullptr;  // SizeClass as 0 / 1
-  float* position = nullptr;  // predicted positions; the correction pass writes position_next
+  float* position = nullptr;                  // predicted positions; the correction pass writes position_next
   float* position_next = nullptr;
   float* density = nullptr;      // rho_i of the last lambda pass
   float* lambda = nullptr;       // the step's total multiplier, <= 0
@@ -46,8 +46,8 @@ struct PbfArrays {
 struct PbfConstants {
   std::array<CubicKernel, kSizeClassCount> kernels;
   float rest_density = 0.0f;
-  std::array<float, kSizeClassCount> relaxation{};    // eps, absolute
-  std::array<float, kSizeClassCount> lambda_scale{};  // l_c: lambda of a full neighbourhood at C = 1
+  std::array<float, kSizeClassCount> relaxation{};         // eps, absolute
+  std::array<float, kSizeClassCount> lambda_scale{};       // l_c: lambda of a full neighbourhood at C = 1
   std::array<float, kSizeClassCount> tensile_reference{};  // W(dq h) per class
   float tensile_k = 0.0f;
   float omega = 1.0f;

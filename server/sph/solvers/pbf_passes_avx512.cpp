@@ -5,8 +5,8 @@
 #include <span>
 
 #include "sph/collision.h"
-#include "sph/simd/pair_lanes_avx512.h"
 #include "sph/simd/avx512_target.h"
+#include "sph/simd/pair_lanes_avx512.h"
 #include "sph/solvers/pbf_passes.h"
 
 SPH_AVX512_BEGIN

@@ -18,9 +18,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-PbfPassForms passForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms();
-}
+PbfPassForms passForms() { return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms(); }
 
 VelocityPassForms velocityForms() {
   return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
