@@ -23,6 +23,9 @@ class ParticleSet : public ParticleAttributes {
 
   std::size_t size() const { return id.size(); }
   std::size_t capacity() const { return capacity_; }
+  // The id the next added particle gets; a checkpoint restores it with the particles.
+  std::uint32_t nextId() const { return next_id_; }
+  void setNextId(std::uint32_t next) { next_id_ = next; }
   bool empty() const { return id.empty(); }
 
   // Appends one particle; class-derived attributes (mass, radius, support) come from `props`, the
@@ -71,6 +74,10 @@ class ParticleSet : public ParticleAttributes {
   // f(vector, spec) for every attribute, spec an AttributeSpec<T> (name, reset value, rules).
   template <typename F>
   void forEachAttributeSpec(F&& f) {
+    std::apply([&](const auto&... spec) { (f(this->*spec.member, spec), ...); }, kParticleAttributes);
+  }
+  template <typename F>
+  void forEachAttributeSpec(F&& f) const {
     std::apply([&](const auto&... spec) { (f(this->*spec.member, spec), ...); }, kParticleAttributes);
   }
 

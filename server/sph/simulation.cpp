@@ -37,6 +37,13 @@ void Simulation::setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) {
   configureGrid(adaptive_ != nullptr);
 }
 
+void Simulation::restore(ParticleSet&& particles, std::int64_t steps, bool surface_distance_tracking) {
+  particles_ = std::move(particles);
+  steps_ = steps;
+  track_surface_distance_ = surface_distance_tracking;
+  time_ = static_cast<double>(steps_) * scene_.params.time_step;
+}
+
 void Simulation::step() {
   const auto step_start = Clock::now();
   timings_ = PhaseTimings{};

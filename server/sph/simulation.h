@@ -51,6 +51,9 @@ class Simulation {
   const PhaseTimings& lastTimings() const { return timings_; }
   const SolverStats& lastSolverStats() const { return solver_stats_; }
   BoxState boxNow() const { return scene_.boundary.stateAt(time_); }
+  // Continues from a checkpoint (checkpoint.h): the particles as they were after `steps` steps.
+  // The next step rebuilds the neighbour grid from them, as every step does.
+  void restore(ParticleSet&& particles, std::int64_t steps, bool surface_distance_tracking);
   // Rebuilds the neighbour lists for the current positions (after the adaptive step changed the set).
   void rebuildNeighbors() { grid_.build(particles_); }
 
