@@ -29,6 +29,14 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->check(CLI::ExistingFile);
   app.add_option("--frames", request.frames, "frames (steps) to run; 0 = the scene's own count")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--preset", request.preset,
+                 "fluid preset for every scene: thesis, pbf or dfsph (default: each scene's own)")
+      ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
+  app.add_option("--load-state", request.load_state,
+                 "continue from this checkpoint (written by --save-state; one scene and method)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--save-state", request.save_state,
+                 "write a checkpoint here after the last frame (one scene and method)");
   app.add_option("--threads", request.threads, "OpenMP threads")->check(CLI::Range(1, 256))->capture_default_str();
   app.add_option("--out", request.out_dir, "output folder (one subfolder per scene/method when several)")
       ->capture_default_str();

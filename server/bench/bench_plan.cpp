@@ -32,7 +32,7 @@ BenchPlan planBench(const BenchRequest& request) {
   std::vector<std::string> methods = request.methods == "all" ? knownMethods() : splitList(request.methods);
   if (scene_names.empty()) throw std::invalid_argument("no scene named (--scene)");
   for (const auto& m : methods) requireKnownMethod(m);
-  for (const auto& s : scene_names) plan.scenes.push_back(scene::loadScene(s, request.scene_dir));
+  for (const auto& s : scene_names) plan.scenes.push_back(scene::loadScene(s, request.scene_dir, request.preset));
 
   const gaze::GazeRecording* override_gaze = nullptr;
   if (!request.gaze_path.empty()) {
@@ -40,6 +40,9 @@ BenchPlan planBench(const BenchRequest& request) {
     override_gaze = plan.recordings.back().get();
   }
   plan.matrix = plan.scenes.size() * std::max<std::size_t>(methods.size(), 1) > 1;
+  if (plan.matrix && !(request.load_state.empty() && request.save_state.empty())) {
+    throw std::invalid_argument("--load-state and --save-state need one scene and one method");
+  }
 
   std::map<std::string, const gaze::GazeRecording*> scene_gaze;
   for (const sph::Scene& sc : plan.scenes) {
@@ -91,6 +94,8 @@ std::vector<RunSummary> runPlan(const BenchPlan& plan, const BenchRequest& reque
       options.frames = request.frames;
       options.threads = request.threads;
       options.gaze = planned.gaze;
+      options.load_state = request.load_state;
+      options.save_state = request.save_state;
       const int frames = request.frames > 0 ? request.frames : planned.scene->frames;
       options.on_frame = [&, r, frames](const sph::Simulation& sim, const FrameRecord& record) {
         total_ms[r] += record.ms.total_ms;

@@ -32,6 +32,9 @@ struct BenchRequest {
   int interleave = 10;  // frames per turn; 0: each method start to end, one after another
   int export_every = 0;
   SnapshotFormat export_format = SnapshotFormat::Vtk;
+  std::string preset;      // thesis, pbf, dfsph, or empty: each scene's own
+  std::string load_state;  // a checkpoint to continue from (one scene, one method)
+  std::string save_state;  // where to write the checkpoint at the end (one scene, one method)
 };
 
 // One run of the plan: a scene, a method, where its files go and the gaze it replays.

@@ -3,6 +3,7 @@
 #include "bench/gaze_replay.h"
 #include "process/omp_wait.h"
 #include "sph/camera.h"
+#include "sph/checkpoint.h"
 
 #include <omp.h>
 #include <algorithm>
@@ -87,6 +88,7 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   auto adaptive = sph::makeAdaptiveController(m, scene.adaptive, sph::cameraFromSpec(scene.camera));
   controller_ = adaptive.get();
   sim_->setAdaptiveStep(std::move(adaptive));
+  if (!options.load_state.empty()) sph::loadCheckpoint(*sim_, method, options.load_state);
   result_.scene = scene.name;
   result_.method = method;
   result_.preset = scene.params.preset;
@@ -114,6 +116,7 @@ void SceneRun::stepFrame() {
   r.ms = sim_->lastTimings();
   measureState(*sim_, r);
   result_.records.push_back(r);
+  if (done() && !options_.save_state.empty()) sph::saveCheckpoint(*sim_, result_.method, options_.save_state);
   if (options_.on_frame) options_.on_frame(*sim_, result_.records.back());
 }
 

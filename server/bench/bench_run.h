@@ -58,6 +58,10 @@ struct RunOptions {
   int threads = 2;
   // Drives gaze and hybrid; required for them (runScene throws without one).
   const gaze::GazeRecording* gaze = nullptr;
+  // Checkpoints (sph/checkpoint.h): start from this one instead of the scene's initial state, and
+  // write one when the run has done its frames. Empty: neither.
+  std::string load_state;
+  std::string save_state;
   // Called after every frame (progress, snapshots); may be empty.
   std::function<void(const sph::Simulation&, const FrameRecord&)> on_frame;
 };

@@ -211,7 +211,7 @@ std::vector<std::string> listScenes(const std::string& dir) {
   return names;
 }
 
-sph::Scene loadScene(const std::string& name_or_path, const std::string& dir) {
+sph::Scene loadScene(const std::string& name_or_path, const std::string& dir, const std::string& preset) {
   fs::path path(name_or_path);
   const bool looks_like_path = path.has_extension() || name_or_path.find('/') != std::string::npos;
   if (!looks_like_path) path = fs::path(dir) / (name_or_path + ".json");
@@ -226,7 +226,7 @@ sph::Scene loadScene(const std::string& name_or_path, const std::string& dir) {
   }
   std::stringstream text;
   text << in.rdbuf();
-  sph::Scene s = parseScene(text.str(), path.string());
+  sph::Scene s = parseScene(text.str(), path.string(), preset);
   if (s.name.empty()) s.name = path.stem().string();
   if (!s.gaze_recording.empty() && fs::path(s.gaze_recording).is_relative()) {
     s.gaze_recording = (path.parent_path() / s.gaze_recording).string();
@@ -234,8 +234,18 @@ sph::Scene loadScene(const std::string& name_or_path, const std::string& dir) {
   return s;
 }
 
-sph::Scene parseScene(const std::string& json_text, const std::string& source) {
+std::string knownPresetList() {
+  std::string known;
+  for (const auto& name : sph::presetNames()) known += (known.empty() ? "" : ", ") + name;
+  return known;
+}
+
+sph::Scene parseScene(const std::string& json_text, const std::string& source, const std::string& preset) {
   const Context ctx{source};
+  sph::SimParams preset_params;
+  if (!preset.empty() && !sph::presetByName(preset, preset_params)) {
+    throw SceneError("unknown preset '" + preset + "' (known: " + knownPresetList() + ")");
+  }
   json doc;
   try {
     doc = json::parse(json_text);
@@ -259,11 +269,11 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source) {
   }
   if (doc.contains("preset")) {
     if (!doc["preset"].is_string() || !sph::presetByName(doc["preset"].get<std::string>(), s.params)) {
-      std::string known;
-      for (const auto& name : sph::presetNames()) known += (known.empty() ? "" : ", ") + name;
-      ctx.fail("preset", "unknown preset (known: " + known + ")");
+      ctx.fail("preset", "unknown preset (known: " + knownPresetList() + ")");
     }
   }
+  // The caller's preset replaces the file's; the file's own "params" still apply on top of it.
+  if (!preset.empty()) s.params = preset_params;
   if (doc.contains("params")) readParams(ctx, doc["params"], s.params);
   try {
     s.params.validate();

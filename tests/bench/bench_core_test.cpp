@@ -1,6 +1,11 @@
 // sph_bench's pieces: replaying a gaze recording into the adaptive step, the method list, and the
 // comparison table.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "bench/bench_compare.h"
 #include "bench/bench_plan.h"
@@ -96,6 +101,37 @@ TEST(BenchRun, InterleavedRunsMatchRunsAlone) {
           << alone.method << " frame " << f;
     }
   }
+}
+
+// --save-state / --load-state: 6 frames, a checkpoint, 6 more from it, gives the checkpoint that 12
+// uninterrupted frames give, byte for byte (gaze method: the replay follows the restored clock).
+TEST(BenchRun, RunContinuedFromACheckpointEndsWhereTheUninterruptedOneDoes) {
+  sph::Scene s = tinyScene(0.25, 300);
+  s.params = sph::pbfPreset();
+  const gaze::GazeRecording rec = threeSamples();
+  const auto dir = std::filesystem::temp_directory_path() / ("bench_ckpt_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto file = [&](const char* name) { return (dir / name).string(); };
+  const auto bytesOf = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  bench::RunOptions options;
+  options.gaze = &rec;
+  options.frames = 12;
+  options.save_state = file("whole.ckpt");
+  bench::runScene(s, "gaze", options);
+  options.frames = 6;
+  options.save_state = file("half.ckpt");
+  bench::runScene(s, "gaze", options);
+  options.load_state = file("half.ckpt");
+  options.save_state = file("resumed.ckpt");
+  const bench::RunResult resumed = bench::runScene(s, "gaze", options);
+  EXPECT_DOUBLE_EQ(resumed.records.back().sim_time, 12 * s.params.time_step);
+  const std::string whole = bytesOf(file("whole.ckpt"));
+  EXPECT_GT(whole.size(), 1000u);
+  EXPECT_TRUE(whole == bytesOf(file("resumed.ckpt")));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {

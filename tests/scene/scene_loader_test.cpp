@@ -60,6 +60,25 @@ TEST(SceneLoader, ParamsOverrideThePreset) {
   EXPECT_DOUBLE_EQ(s.params.time_step, 0.003);
 }
 
+TEST(SceneLoader, CallersPresetReplacesTheScenesAndParamsStillApply) {
+  const std::string text = withKey(R"("preset": "thesis", "params": {"xsph_viscosity": 0.05})");
+  const sph::Scene s = scene::parseScene(text, "t", "dfsph");
+  EXPECT_EQ(s.params.preset, "dfsph");
+  EXPECT_EQ(s.params.solver, sph::Solver::kDfsph);
+  EXPECT_DOUBLE_EQ(s.params.xsph_viscosity, 0.05);
+  EXPECT_EQ(scene::parseScene(text, "t").params.preset, "thesis");
+}
+
+TEST(SceneLoader, UnknownCallerPresetListsTheKnownOnes) {
+  try {
+    scene::parseScene(kMinimal, "t", "water");
+    FAIL() << "an unknown preset loaded";
+  } catch (const scene::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown preset 'water' (known: thesis, pbf, dfsph)"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(SceneLoader, UnknownKeyIsNamed) {
   const std::string e = errorOf(withKey(R"("bogus": 1)"));
   EXPECT_NE(e.find("test.json"), std::string::npos) << e;

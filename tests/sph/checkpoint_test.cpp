@@ -32,8 +32,7 @@ sph::Scene tank(const std::string& preset) {
 std::unique_ptr<sph::Simulation> makeSim(const sph::Scene& scene, sph::Method method) {
   auto sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method), 4000);
   if (method != sph::Method::Regular) {
-    sim->setAdaptiveStep(
-        sph::makeAdaptiveController(method, sph::AdaptiveConfig{}, sph::cameraFromSpec(scene.camera)));
+    sim->setAdaptiveStep(sph::makeAdaptiveController(method, sph::AdaptiveConfig{}, sph::cameraFromSpec(scene.camera)));
   }
   return sim;
 }
