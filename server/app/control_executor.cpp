@@ -78,6 +78,7 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
   const SimSession& s = target.session;
   status.set_scene(s.scene().name);
   status.set_method(net::toProtoMethod(s.method()));
+  status.set_preset(s.preset());
   status.set_paused(target.settings.paused);
   const sph::ParticleSet& p = s.sim().particles();
   const std::size_t large = p.countOf(sph::SizeClass::Large);
@@ -146,6 +147,21 @@ ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& tar
           spdlog::info("method {} -> {}: the scene restarted", sph::methodName(before), sph::methodName(method));
         } else {
           spdlog::info("method {} -> {}", sph::methodName(before), sph::methodName(method));
+        }
+        break;
+      }
+      case gsph::v1::Control::kSetPreset: {
+        const std::string& wanted = request.set_preset().preset();
+        const std::string before = session.preset();
+        try {
+          if (wanted.empty())
+            throw scene::SceneError("set_preset needs a preset (known: " + scene::knownPresetList() + ")");
+          if (session.setPreset(wanted)) {
+            effects.restart_clock = true;
+            spdlog::info("preset {} -> {}: the scene restarted", before, wanted);
+          }
+        } catch (const scene::SceneError& e) {
+          fail(reply, gsph::v1::ERROR_CODE_UNKNOWN_PRESET, e.what());
         }
         break;
       }

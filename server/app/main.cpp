@@ -55,6 +55,16 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")->capture_default_str();
   cli.add_option("--method", o.method, "regular, surface, gaze or hybrid (default: the scene's method)")
       ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
+  sim.preset = "pbf";
+  cli.add_option("--preset", sim.preset,
+                 "fluid: pbf (incompressible, position based), dfsph (incompressible, divergence-free), "
+                 "thesis (the thesis's compressible SPH, k = 3), or scene (the scene file's own preset)")
+      ->check(CLI::IsMember({"pbf", "dfsph", "thesis", "scene"}))
+      ->capture_default_str();
+  cli.add_option("--load-state", sim.load_state,
+                 "continue from this checkpoint (written by --save-state with the same scene, preset and method)")
+      ->check(CLI::ExistingFile);
+  cli.add_option("--save-state", sim.save_state, "write a checkpoint here when the server stops");
   cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
   cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
       ->check(publishHzValidator())
@@ -120,6 +130,7 @@ int main(int argc, char** argv) {
   addOptions(cli, o);
   CLI11_PARSE(cli, argc, argv);
   spdlog::set_level(spdlog::level::from_str(o.log_level));
+  if (o.server.sim.preset == "scene") o.server.sim.preset.clear();
 
   if (!o.method.empty()) {
     sph::Method m;
@@ -169,8 +180,10 @@ int main(int argc, char** argv) {
     spdlog::info("endpoint gaze {}", ep.gaze);
     spdlog::info("endpoint pose {}", ep.pose);
     spdlog::info("endpoint control {}", ep.control);
-    spdlog::info("scene {}, method {}, {} Hz, {}", o.server.sim.scene, o.method.empty() ? "(scene default)" : o.method,
-                 o.server.sim.settings.publish_hz, o.server.sim.settings.free_run ? "free-run" : "real time");
+    spdlog::info("scene {}, preset {}, method {}, {} Hz, {}", o.server.sim.scene,
+                 o.server.sim.preset.empty() ? "(scene's own)" : o.server.sim.preset,
+                 o.method.empty() ? "(scene default)" : o.method, o.server.sim.settings.publish_hz,
+                 o.server.sim.settings.free_run ? "free-run" : "real time");
     spdlog::info("file descriptors: limit {} (was {}), up to {} peers per socket", fds.now, fds.before,
                  o.server.net.max_peers);
     if (o.server.net.curve) {
@@ -187,6 +200,7 @@ int main(int argc, char** argv) {
     if (signal > 0) spdlog::info("{} received, shutting down", process::StopSignals::name(signal));
     server.stop();
     spdlog::info("final status: {}", server.statusLine());
+    if (!server.stateSaved()) return 1;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 1;

@@ -40,6 +40,8 @@ class Server {
   const net::Endpoints& endpoints() const { return net_->bound(); }
   bool finished() const { return sim_->finished(); }
   std::string statusLine() const { return sim_->statusLine(); }
+  // After stop(): false when a --save-state checkpoint was asked for and could not be written.
+  bool stateSaved() const { return sim_->stateSaved(); }
   const SimCounters& simCounters() const { return sim_->counters(); }
   const net::NetCounters& netCounters() const { return net_->counters(); }
   const net::RejectionLog& rejections() const { return rejections_; }

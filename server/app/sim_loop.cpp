@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "net/input_validation.h"
+#include "sph/checkpoint.h"
 
 namespace app {
 namespace {
@@ -38,7 +39,13 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
       pacer_(options.settings.publish_hz, Clock::now()),
       refusal_log_(options.log_interval) {
   encoder_.setNeighborCounts(options.neighbor_counts);
+  session_.usePreset(options.preset);
   session_.load(options.scene, options.method, /*allow_paths=*/true);
+  if (!options.load_state.empty()) {
+    const sph::CheckpointInfo info =
+        sph::loadCheckpoint(session_.sim(), sph::methodName(session_.method()), options.load_state);
+    spdlog::info("continuing from {}: step {}, {} particles", options.load_state, info.steps, info.particles);
+  }
   net::fromScreenCamera(session_.camera(), camera_msg_);
   camera_msg_.set_viewer_id("scene");
 }
@@ -101,10 +108,10 @@ void SimLoop::run() {
       now = Clock::now();
       // The frame that shows a new gaze sample's refinement goes out now, not at the next tick.
       if (std::exchange(step_used_new_gaze_, false)) pacer_.freshSample();
-      if (options_.max_steps > 0 && session_.sim().stepCount() >= options_.max_steps) {
+      if (options_.max_steps > 0 && counters_.steps.load() >= options_.max_steps) {
         publish(now);
         finished_ = true;
-        spdlog::info("ran {} steps (--max-steps)", session_.sim().stepCount());
+        spdlog::info("ran {} steps (--max-steps)", counters_.steps.load());
       }
     }
     if (pacer_.due(now)) publish(now);
@@ -121,6 +128,18 @@ void SimLoop::run() {
     mailbox_.waitUntil(deadline);
   }
   refreshStatusLine(Clock::now());
+  saveState();
+}
+
+void SimLoop::saveState() {
+  if (options_.save_state.empty()) return;
+  try {
+    sph::saveCheckpoint(session_.sim(), sph::methodName(session_.method()), options_.save_state);
+    spdlog::info("state at step {} saved to {}", session_.sim().stepCount(), options_.save_state);
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    state_saved_ = false;
+  }
 }
 
 void SimLoop::handleControls() {
@@ -236,11 +255,11 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
         fmt::format("gaze age {:.0f} ms", std::chrono::duration<double, std::milli>(now - gaze.arrived).count());
   }
   std::string line = fmt::format(
-      "{} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small), {} subscribers, "
+      "{} {} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small), {} subscribers, "
       "{}, {} frames sent, {} dropped, {} inputs rejected",
-      session_.scene().name, sph::methodName(session_.method()), session_.sim().stepCount(), session_.sim().time(),
-      settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large, p.size() - large,
-      net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
+      session_.scene().name, session_.preset(), sph::methodName(session_.method()), session_.sim().stepCount(),
+      session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large,
+      p.size() - large, net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
       counters_.frames_dropped.load(), rejections_.total());
   if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";
   std::lock_guard lock(status_mutex_);

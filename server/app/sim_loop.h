@@ -29,6 +29,11 @@ struct SimLoopOptions {
   std::string scene = "dambreak";
   std::string scene_dir;
   std::optional<sph::Method> method;  // none: the scene's default method
+  std::string preset;                 // thesis, pbf, dfsph; empty: each scene's own
+  // Checkpoints (sph/checkpoint.h): continue from this one at the start; write one when the loop
+  // ends (a stop signal or max_steps). Empty: neither.
+  std::string load_state;
+  std::string save_state;
   // Adaptive settings by name (adaptive_parameters.h) over each scene's own "adaptive" block.
   std::map<std::string, double> adaptive_overrides;
   RunSettings settings;
@@ -36,7 +41,7 @@ struct SimLoopOptions {
   bool neighbor_counts = false;  // per-particle neighbour counts in frames (viewer's spray)
   int threads = 2;
   std::string camera_source;       // empty: the most recent pose from any viewer
-  std::int64_t max_steps = 0;      // stop after this many steps (0: run until stopped)
+  std::int64_t max_steps = 0;      // stop after this many steps of this run (0: run until stopped)
   double status_interval_s = 5.0;  // periodic one-line status (0: off)
   // At most one line per interval for each kind of refused input (control refusals here, rejected
   // messages in net::RejectionLog).
@@ -67,6 +72,8 @@ class SimLoop {
   // True once max_steps were run (the last frame is published first).
   bool finished() const { return finished_.load(); }
   const SimCounters& counters() const { return counters_; }
+  // After stop(): false when options.save_state was set and the checkpoint could not be written.
+  bool stateSaved() const { return state_saved_.load(); }
   // One line: steps/s, particles, subscribers, gaze age, frames, drops, rejected input.
   std::string statusLine() const;
 
@@ -74,6 +81,7 @@ class SimLoop {
   using Clock = std::chrono::steady_clock;
 
   void run();
+  void saveState();  // options_.save_state, from the simulation thread as the loop ends
   void handleControls();
   void applyCamera();
   void feedGaze(sph::AdaptiveController& controller);
@@ -121,6 +129,7 @@ class SimLoop {
   mutable std::mutex status_mutex_;
   std::string status_line_;
   std::thread thread_;
+  std::atomic<bool> state_saved_{true};
 };
 
 }  // namespace app

@@ -36,7 +36,7 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
   if (!allow_paths && std::find(names.begin(), names.end(), scene_name) == names.end()) {
     throw scene::SceneError("no scene '" + net::echoText(scene_name) + "' in " + scene_dir_);
   }
-  const sph::Scene scene = scene::loadScene(scene_name, scene_dir_);
+  const sph::Scene scene = scene::loadScene(scene_name, scene_dir_, preset_override_);
   sph::Method chosen = sph::Method::Regular;
   if (method) {
     chosen = *method;
@@ -44,6 +44,30 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
     throw scene::SceneError(scene.source + ": unknown method '" + scene.method + "'");
   }
   start(scene, chosen, withOverrides(scene.adaptive, overrides_));
+  scene_name_ = scene_name;
+  scene_allow_paths_ = allow_paths;
+}
+
+void SimSession::usePreset(const std::string& preset) {
+  sph::SimParams unused;
+  if (!preset.empty() && !sph::presetByName(preset, unused)) {
+    throw scene::SceneError("unknown preset '" + net::echoText(preset) + "' (known: " + scene::knownPresetList() + ")");
+  }
+  preset_override_ = preset;
+}
+
+bool SimSession::setPreset(const std::string& preset) {
+  if (preset == this->preset()) return false;
+  const std::string before = preset_override_;
+  usePreset(preset);
+  try {
+    // The file again: its own "params" apply on top of the new preset, as at a first load.
+    load(scene_name_, method_, scene_allow_paths_);
+  } catch (...) {
+    preset_override_ = before;
+    throw;
+  }
+  return true;
 }
 
 void SimSession::reset() { start(scene_, method_, config_); }

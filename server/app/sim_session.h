@@ -27,6 +27,14 @@ class SimSession {
   // "adaptive" values whenever a scene is loaded (the command line's --gaze-radius and friends).
   SimSession(std::string scene_dir, std::map<std::string, double> overrides, BeforeAdaptiveStep before);
 
+  // The fluid preset every scene loads with from now on (sph::presetNames), or empty: each scene's
+  // own. Takes effect at the next load; throws scene::SceneError for an unknown name.
+  void usePreset(const std::string& preset);
+  // Restarts the current scene with `preset` (same method and settings); later loads keep it.
+  // Throws scene::SceneError for an unknown name, and then changes nothing. False when the scene
+  // already ran it.
+  bool setPreset(const std::string& preset);
+
   // Starts `scene` with `method` (none: the scene's default method) and the scene's adaptive settings
   // under the overrides. `scene` is a name in the scene folder, or with `allow_paths` (the command
   // line, never a remote peer) also a path to a scene file. Throws scene::SceneError or
@@ -49,6 +57,8 @@ class SimSession {
   const sph::Simulation& sim() const { return *sim_; }
   const sph::Scene& scene() const { return scene_; }
   const std::string& sceneDir() const { return scene_dir_; }
+  // The preset the running simulation steps with (the override, or the scene's own).
+  const std::string& preset() const { return scene_.params.preset; }
   sph::Method method() const { return method_; }
   const sph::AdaptiveConfig& config() const { return config_; }
   const sph::ScreenCamera& camera() const { return camera_; }
@@ -60,6 +70,9 @@ class SimSession {
   void start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config);
 
   std::string scene_dir_;
+  std::string preset_override_;  // empty: each scene's own preset
+  std::string scene_name_;       // what load() was given, so that setPreset can read the file again
+  bool scene_allow_paths_ = false;
   std::map<std::string, double> overrides_;
   sph::AdaptiveConfig config_;
   BeforeAdaptiveStep before_;

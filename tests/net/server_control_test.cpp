@@ -147,6 +147,39 @@ TEST(ServerControl, SetMethodSwapsInPlaceOrRestartsForRegular) {
   }
 }
 
+TEST(ServerControl, SetPresetRestartsTheSceneWithTheOtherFluid) {
+  ControlRun run;
+  EXPECT_EQ(run.status().status().preset(), "thesis") << "tiny_pool names the thesis preset";
+  ASSERT_TRUE(run.sub.waitFor([](const gsph::v1::Frame& f) { return f.step() >= 10; }));
+  Control set;
+  set.mutable_set_preset()->set_preset("pbf");
+  ControlReply r = run.request(set);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.status().preset(), "pbf");
+  EXPECT_EQ(r.status().scene(), "tiny_pool");
+  EXPECT_EQ(r.status().method(), gsph::v1::METHOD_GAZE) << "the method stays";
+  EXPECT_LT(r.status().step(), 10) << "the scene restarted";
+  expectFreshTinyPool(r.status());
+
+  for (const char* bad : {"water", "", "PBF"}) {
+    set.mutable_set_preset()->set_preset(bad);
+    r = run.request(set);
+    EXPECT_FALSE(r.ok()) << bad;
+    EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_UNKNOWN_PRESET) << bad;
+    EXPECT_NE(r.error().find("thesis, pbf, dfsph"), std::string::npos) << r.error();
+    EXPECT_EQ(r.status().preset(), "pbf") << "a refused preset changes nothing";
+  }
+  // The chosen preset stays for a reset and for the scenes loaded after it.
+  Control reset;
+  reset.mutable_reset();
+  EXPECT_EQ(run.request(reset).status().preset(), "pbf");
+  Control load;
+  load.mutable_load_scene()->set_scene("tiny_column");
+  r = run.request(load);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.status().preset(), "pbf");
+}
+
 TEST(ServerControl, SetParametersAllOrNothing) {
   ControlRun run;
   ControlReply r = run.request(run.setParameters({{"gaze_radius", 0.1}, {"publish_hz", 30.0}}));

@@ -21,6 +21,8 @@ def arguments_for(verb, rest):
         return {"scene": rest[0]}
     if verb == "set_method":
         return {"method": rest[0]}
+    if verb == "set_preset":
+        return {"preset": rest[0]}
     if verb == "set_parameters":
         return {"values": {k: float(v) for k, v in (item.split("=", 1) for item in rest)}}
     return {}
@@ -29,8 +31,8 @@ def arguments_for(verb, rest):
 def main():
     p = parser(__doc__.splitlines()[0])
     p.add_argument("verb", choices=["status", "pause", "resume", "reset", "load_scene", "set_method",
-                                    "set_parameters"])
-    p.add_argument("values", nargs="*", help="scene name, method, or NAME=VALUE pairs")
+                                    "set_preset", "set_parameters"])
+    p.add_argument("values", nargs="*", help="scene name, method, preset, or NAME=VALUE pairs")
     p.add_argument("--timeout", type=float, default=5.0)
     args = p.parse_args()
     with ControlClient(Endpoints.from_arguments(args).control, timeout_s=args.timeout, **security(args)) as control:
@@ -43,7 +45,7 @@ def main():
             print(f"refused: {error}", file=sys.stderr)
             return 1
     s = reply.status
-    print(f"ok (request {reply.request_id}): {s.scene} / {method_name(s.method)}, {'paused' if s.paused else 'running'}, "
+    print(f"ok (request {reply.request_id}): {s.scene} / {s.preset} / {method_name(s.method)}, {'paused' if s.paused else 'running'}, "
           f"step {s.step}, {s.steps_per_second:.1f} steps/s, {s.particle_count} particles "
           f"({s.large_count} large, {s.small_count} small), {s.subscribers} subscribers, gaze age {s.gaze_age_ms:.0f} ms")
     print(f"   scenes: {', '.join(s.scenes)}")

@@ -57,7 +57,7 @@ class ControlError(RuntimeError):
 
 def build_request(verb: str, request_id: int, **arguments) -> "pb.Control":
     """A Control message for one verb: status, pause, resume, reset, load_scene(scene=),
-    set_method(method=), set_parameters(values={name: number})."""
+    set_method(method=), set_preset(preset=), set_parameters(values={name: number})."""
     control = pb.Control(protocol_version=pb.PROTOCOL_VERSION_CURRENT, request_id=request_id)
     if verb in ("status", "pause", "resume", "reset"):
         if arguments:
@@ -67,6 +67,8 @@ def build_request(verb: str, request_id: int, **arguments) -> "pb.Control":
         control.load_scene.scene = arguments["scene"]
     elif verb == "set_method":
         control.set_method.method = method_value(arguments["method"])
+    elif verb == "set_preset":
+        control.set_preset.preset = arguments["preset"]
     elif verb == "set_parameters":
         values: Mapping[str, float] = arguments["values"]
         for name, value in values.items():
@@ -147,6 +149,10 @@ class ControlClient:
 
     def set_method(self, method: Union[str, int], **kw) -> "pb.ControlReply":
         return self.request("set_method", method=method, **kw)
+
+    def set_preset(self, preset: str, **kw) -> "pb.ControlReply":
+        """Restarts the scene with the fluid preset "thesis", "pbf" or "dfsph"."""
+        return self.request("set_preset", preset=preset, **kw)
 
     def set_parameters(self, values: Mapping[str, float], **kw) -> "pb.ControlReply":
         return self.request("set_parameters", values=values, **kw)
