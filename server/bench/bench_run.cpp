@@ -84,7 +84,11 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
     throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" + scene.name +
                                 "' names none; pass --gaze FILE)");
   }
-  sim_ = std::make_unique<sph::Simulation>(scene, sph::startClass(m));
+  // Room for every LARGE particle to split, as sph_server allows (app/sim_session.cpp).
+  const std::size_t capacity =
+      std::max<std::size_t>(sph::ParticleSet::kDefaultCapacity,
+                            static_cast<std::size_t>(sph::initialParticleCount(scene, sph::SizeClass::Small)));
+  sim_ = std::make_unique<sph::Simulation>(scene, sph::startClass(m), capacity);
   auto adaptive = sph::makeAdaptiveController(m, scene.adaptive, sph::cameraFromSpec(scene.camera));
   controller_ = adaptive.get();
   sim_->setAdaptiveStep(std::move(adaptive));

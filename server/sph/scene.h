@@ -45,6 +45,10 @@ struct Scene {
 
 // Which class the water starts in: adaptive methods start LARGE; the regular method fills the same
 // mass with SMALL particles (m_LARGE / m_SMALL as many: 20,000 with the thesis preset).
+// The scene with its container narrowed to the water region (clipped to the box) and nothing
+// moving: where fresh water settles before it is released (Simulation's constructor).
+Scene gatedScene(const Scene& scene);
+
 int initialParticleCount(const Scene& scene, SizeClass start_class);
 
 // Fills `out` with the scene's water on a cubic lattice of spacing cbrt(m / rho0), bottom layer first.

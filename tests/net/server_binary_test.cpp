@@ -92,10 +92,11 @@ void expectCleanShutdown(int signal) {
   auto reply = client.send(net_test::statusRequest());
   ASSERT_TRUE(reply);
   EXPECT_EQ(reply->status().scene(), "tiny_pool");
+  EXPECT_EQ(reply->status().preset(), "pbf") << "sph_server's water is pbf unless told otherwise";
   ::kill(child.pid, signal);
   EXPECT_EQ(child.waitExit(), 0) << child.output;
   EXPECT_NE(child.output.find("shutting down"), std::string::npos) << child.output;
-  EXPECT_NE(child.output.find("final status: tiny_pool gaze"), std::string::npos) << child.output;
+  EXPECT_NE(child.output.find("final status: tiny_pool pbf gaze"), std::string::npos) << child.output;
 }
 
 TEST(ServerBinary, SigtermShutsDownCleanly) { expectCleanShutdown(SIGTERM); }

@@ -52,9 +52,9 @@ TEST(ServerCheckpoint, RestartedRunEqualsTheUninterruptedOneByteForByte) {
 
   // Another preset cannot continue it: a clear error, exit 1, nothing written.
   const std::string refused = scratch("refused.ckpt");
-  EXPECT_EQ(runServer("refused", {"--preset", "dfsph", "--max-steps", "5", "--load-state", half, "--save-state",
-                                  refused}),
-            1);
+  EXPECT_EQ(
+      runServer("refused", {"--preset", "dfsph", "--max-steps", "5", "--load-state", half, "--save-state", refused}),
+      1);
   EXPECT_NE(bytesOf(scratch("refused") + ".log").find("saved with preset 'pbf', this run uses 'dfsph'"),
             std::string::npos)
       << bytesOf(scratch("refused") + ".log");

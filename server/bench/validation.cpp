@@ -1,0 +1,146 @@
+#include "bench/validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace bench {
+
+const std::vector<FrontPoint>& martinMoyceN2() {
+  // Martin & Moyce 1952, n^2 = 2, as (T, Z).
+  static const std::vector<FrontPoint> points = {
+      {0.00, 1.00}, {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89}, {1.83, 2.11}, {1.98, 2.33},
+      {2.20, 2.56}, {2.32, 2.78}, {2.51, 3.00}, {2.65, 3.22}, {2.83, 3.44}, {2.98, 3.67}, {3.11, 3.89}, {3.33, 4.11}};
+  return points;
+}
+
+namespace {
+
+// The lattice spacing of the particle's class: the edge of its cube of volume m / rho0.
+double spacingOf(const sph::ParticleSet& p, std::size_t i, double rest_density) {
+  return std::cbrt(p.mass[i] / rest_density);
+}
+
+double interpolateZ(const std::vector<FrontPoint>& curve, double T) {
+  if (curve.empty()) return std::numeric_limits<double>::quiet_NaN();
+  if (T <= curve.front().T) return curve.front().Z;
+  for (std::size_t k = 1; k < curve.size(); ++k) {
+    if (T <= curve[k].T) {
+      const double f = (T - curve[k - 1].T) / (curve[k].T - curve[k - 1].T);
+      return curve[k - 1].Z + f * (curve[k].Z - curve[k - 1].Z);
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();  // beyond the simulated time: not comparable
+}
+
+}  // namespace
+
+Column measureColumn(const sph::ParticleSet& p, double rest_density, double wall_x) {
+  Column c;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double half = 0.5 * spacingOf(p, i, rest_density);  // to the edge of the particle's volume
+    c.width = std::max(c.width, p.position[i].x() + half - wall_x);
+    c.height = std::max(c.height, p.position[i].y() + half);
+  }
+  return c;
+}
+
+double surgeFrontX(const sph::ParticleSet& p, double rest_density) {
+  if (p.empty()) return 0.0;
+  std::vector<std::pair<float, std::size_t>> xs(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) xs[i] = {p.position[i].x(), i};
+  const std::size_t k = std::min(p.size() - 1, static_cast<std::size_t>(std::floor(0.999 * (p.size() - 1))));
+  std::nth_element(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(k), xs.end());
+  return xs[k].first + 0.5 * spacingOf(p, xs[k].second, rest_density);
+}
+
+double maxRelativeFrontError(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
+                             double t_max, double shift) {
+  double worst = 0.0;
+  for (const FrontPoint& e : experiment) {
+    if (e.T > t_max || e.T == 0.0) continue;  // at T = 0, Z = 1 by definition
+    const double z = interpolateZ(simulated, e.T - shift);
+    if (!std::isfinite(z)) return std::numeric_limits<double>::infinity();
+    worst = std::max(worst, std::abs(z - e.Z) / e.Z);
+  }
+  return worst;
+}
+
+double bestStartupShift(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
+                        double t_max, double max_shift, double& error) {
+  double best = 0.0;
+  error = maxRelativeFrontError(simulated, experiment, t_max, 0.0);
+  for (int k = 1; k * 0.01 <= max_shift + 1e-9; ++k) {
+    const double e = maxRelativeFrontError(simulated, experiment, t_max, k * 0.01);
+    if (e < error) {
+      error = e;
+      best = k * 0.01;
+    }
+  }
+  return best;
+}
+
+RestProfile measureRestProfile(const sph::ParticleSet& p, double rest_density, const Eigen::Vector3f& box_min,
+                               const Eigen::Vector3f& box_max, double bin_width) {
+  RestProfile r;
+  if (p.empty()) return r;
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    top = std::max(top, p.position[i].y() + 0.5 * spacingOf(p, i, rest_density));
+  }
+  r.surface_y = top;
+  const double depth_max = top - box_min.y();
+  const int nbins = std::max(1, static_cast<int>(std::ceil(depth_max / bin_width)));
+  r.bins.resize(nbins);
+  double speed_sq = 0.0, error_sum = 0.0;
+  double side_sum = 0.0, floor_sum = 0.0;
+  int side_n = 0, floor_n = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector3f& x = p.position[i];
+    const double depth = top - x.y();
+    const int b = std::clamp(static_cast<int>(depth / bin_width), 0, nbins - 1);
+    const double ratio = p.density[i] / rest_density;
+    r.bins[b].count += 1;
+    r.bins[b].density_ratio += ratio;
+    r.bins[b].pressure += p.pressure[i];
+    error_sum += std::abs(ratio - 1.0);
+    speed_sq += p.velocity[i].squaredNorm();
+    const double s = spacingOf(p, i, rest_density);
+    // The layers touching a wall, below the top two layers (the free surface is under-dense by
+    // nature: it has no water above it).
+    if (depth < 2.0 * s) continue;
+    if (x.y() - box_min.y() < s) {
+      floor_sum += ratio;
+      ++floor_n;
+    } else if (x.x() - box_min.x() < s || box_max.x() - x.x() < s || x.z() - box_min.z() < s ||
+               box_max.z() - x.z() < s) {
+      side_sum += ratio;
+      ++side_n;
+    }
+  }
+  const double n = static_cast<double>(p.size());
+  r.mean_density_error = error_sum / n;
+  r.rms_speed = std::sqrt(speed_sq / n);
+  if (side_n > 0) r.wall_density_error = std::abs(side_sum / side_n - 1.0);
+  if (floor_n > 0) r.wall_density_error = std::max(r.wall_density_error, std::abs(floor_sum / floor_n - 1.0));
+  // Least squares p = c + slope * depth over the bins' means, weighted by their counts.
+  double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (int b = 0; b < nbins; ++b) {
+    DepthBin& bin = r.bins[b];
+    bin.depth = (b + 0.5) * bin_width;
+    if (bin.count == 0) continue;
+    bin.density_ratio /= bin.count;
+    bin.pressure /= bin.count;
+    const double w = bin.count;
+    sw += w;
+    sx += w * bin.depth;
+    sy += w * bin.pressure;
+    sxx += w * bin.depth * bin.depth;
+    sxy += w * bin.depth * bin.pressure;
+  }
+  const double denominator = sw * sxx - sx * sx;
+  if (denominator > 0.0) r.pressure_slope = (sw * sxy - sx * sy) / denominator;
+  return r;
+}
+
+}  // namespace bench

@@ -1,0 +1,64 @@
+// Validation against experiment and theory (sph_validate): the surge front of a dam break against
+// Martin & Moyce (1952, "An experimental study of the collapse of liquid columns on a rigid
+// horizontal plane", Phil. Trans. R. Soc. A 244), and the density and pressure of water at rest
+// against depth (rho0 everywhere for incompressible water, p = rho0 g depth).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sph/particles.h"
+
+namespace bench {
+
+// One point of a surge-front curve: T = t sqrt(2 g / a), Z = x_front / a.
+struct FrontPoint {
+  double T = 0.0;
+  double Z = 0.0;
+};
+
+// Martin & Moyce's measured front for n^2 = 2 (their figure for the square-based column), T <= 3.33.
+const std::vector<FrontPoint>& martinMoyceN2();
+
+// The initial column as the particles fill it: the width a (from the wall at x = wall_x to the
+// edge of the particles' volumes, m / rho0 each) and the height above y = 0.
+struct Column {
+  double width = 0.0;
+  double height = 0.0;
+};
+Column measureColumn(const sph::ParticleSet& particles, double rest_density, double wall_x);
+
+// The front's x: the 99.9th percentile of the particles' x plus half their spacing (the edge of
+// the leading particle's volume), so that a few spray particles ahead of the water do not count.
+double surgeFrontX(const sph::ParticleSet& particles, double rest_density);
+
+// The simulated curve compared with the experiment at the experiment's T <= t_max: the largest
+// relative error |Z_sim(T + shift) - Z_exp| / Z_exp over those points, with the simulated curve
+// interpolated linearly. `shift` delays the experiment (its gate took time to clear).
+double maxRelativeFrontError(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
+                             double t_max, double shift);
+
+// The shift in [0, max_shift] (steps of 0.01) with the smallest maximum error; `error` gets it.
+double bestStartupShift(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
+                        double t_max, double max_shift, double& error);
+
+// Water at rest, binned by depth below its free surface.
+struct DepthBin {
+  double depth = 0.0;  // bin centre, m below the surface
+  int count = 0;
+  double density_ratio = 0.0;  // mean rho / rho0
+  double pressure = 0.0;       // mean p, Pa
+};
+struct RestProfile {
+  double surface_y = 0.0;           // the free surface: the highest particle's volume edge
+  std::vector<DepthBin> bins;       // top to bottom
+  double mean_density_error = 0.0;  // mean |rho / rho0 - 1| over all particles
+  double wall_density_error = 0.0;  // the largest |mean rho / rho0 - 1| of the wall and floor layers
+  double pressure_slope = 0.0;      // least-squares dp / d(depth), Pa/m (rho0 g for water)
+  double rms_speed = 0.0;           // m/s
+};
+// `box_min`/`box_max`: the tank; wall and floor layers are the particles within one spacing of a wall.
+RestProfile measureRestProfile(const sph::ParticleSet& particles, double rest_density, const Eigen::Vector3f& box_min,
+                               const Eigen::Vector3f& box_max, double bin_width);
+
+}  // namespace bench

@@ -1,0 +1,75 @@
+// sph_validate's measurements (bench/validation.h) on inputs whose answers are known: the
+// experiment's own curve has no error, a late curve is found late and a shift within the limit
+// repairs it, and a lattice with hydrostatic pressure gives rho0 g as its pressure slope.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bench/validation.h"
+
+namespace {
+
+TEST(Validation, TheExperimentMatchesItself) {
+  const auto& mm = bench::martinMoyceN2();
+  ASSERT_EQ(mm.size(), 16u);
+  EXPECT_DOUBLE_EQ(bench::maxRelativeFrontError(mm, mm, 3.0, 0.0), 0.0);
+}
+
+TEST(Validation, ALateFrontIsLateAndAShiftRepairsIt) {
+  std::vector<bench::FrontPoint> late;
+  for (const auto& p : bench::martinMoyceN2()) late.push_back({p.T + 0.15, p.Z});
+  late.insert(late.begin(), {0.0, 1.0});
+  EXPECT_GT(bench::maxRelativeFrontError(late, bench::martinMoyceN2(), 3.0, 0.0), 0.05);
+  double error = 1.0;
+  // The shift delays the experiment, not the simulation: a late simulation cannot be shifted back.
+  bench::bestStartupShift(late, bench::martinMoyceN2(), 3.0, 0.2, error);
+  EXPECT_GT(error, 0.05);
+  std::vector<bench::FrontPoint> early;
+  for (const auto& p : bench::martinMoyceN2()) early.push_back({std::max(0.0, p.T - 0.15), p.Z});
+  const double shift = bench::bestStartupShift(early, bench::martinMoyceN2(), 3.0, 0.2, error);
+  EXPECT_NEAR(shift, 0.15, 0.011);
+  EXPECT_LT(error, 0.01);
+  // A curve that stops before T = 3 cannot pass.
+  std::vector<bench::FrontPoint> short_run(bench::martinMoyceN2().begin(), bench::martinMoyceN2().begin() + 5);
+  EXPECT_TRUE(std::isinf(bench::maxRelativeFrontError(short_run, bench::martinMoyceN2(), 3.0, 0.0)));
+}
+
+TEST(Validation, FrontIgnoresAFewSprayParticles) {
+  sph::ParticleSet p(4000);
+  sph::SizeClassProps props;
+  props.mass = 998.29e-6;  // a 10 mm lattice
+  for (int i = 0; i < 3000; ++i) p.add(sph::Vec3(0.01f * (i % 30) + 0.005f, 0.0f, 0.0f), sph::Vec3::Zero(),
+                                       sph::SizeClass::Small, props);
+  p.add(sph::Vec3(2.0f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::SizeClass::Small, props);  // a drop far ahead
+  EXPECT_NEAR(bench::surgeFrontX(p, 998.29), 0.30, 1e-4);
+  const bench::Column c = bench::measureColumn(p, 998.29, 0.0);
+  EXPECT_NEAR(c.width, 2.005, 1e-4) << "the column is measured at the start, before any spray";
+}
+
+TEST(Validation, HydrostaticLatticeHasSlopeRho0G) {
+  const double rho0 = 998.29, s = 0.01;
+  sph::ParticleSet p(20000);
+  sph::SizeClassProps props;
+  props.mass = rho0 * s * s * s;
+  const int n = 10, layers = 30;
+  for (int y = 0; y < layers; ++y) {
+    for (int z = 0; z < n; ++z) {
+      for (int x = 0; x < n; ++x) {
+        const std::size_t i = p.size();
+        p.add(sph::Vec3((x + 0.5f) * s, (y + 0.5f) * s, (z + 0.5f) * s), sph::Vec3::Zero(), sph::SizeClass::Small,
+              props);
+        p.density[i] = static_cast<float>(rho0 * (x == 0 ? 1.03 : 1.0));  // one wall layer 3 % dense
+        p.pressure[i] = static_cast<float>(rho0 * 9.81 * (layers - y - 0.5) * s);
+      }
+    }
+  }
+  const bench::RestProfile r =
+      bench::measureRestProfile(p, rho0, Eigen::Vector3f::Zero(), Eigen::Vector3f(n * s, 1.0f, n * s), 2.0 * s);
+  EXPECT_NEAR(r.surface_y, layers * s, 1e-6);
+  EXPECT_NEAR(r.pressure_slope / (rho0 * 9.81), 1.0, 1e-3);
+  EXPECT_NEAR(r.mean_density_error, 0.003, 1e-4);  // a tenth of the particles 3 % off
+  EXPECT_GT(r.wall_density_error, 0.005) << "the dense wall layer is seen";
+  EXPECT_DOUBLE_EQ(r.rms_speed, 0.0);
+}
+
+}  // namespace
