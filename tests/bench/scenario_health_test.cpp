@@ -1,5 +1,6 @@
 // Scenario tier: 900 frames of every shipped scene with every method keep every particle in the
-// box, produce no NaN and keep the mass exactly (by class, every frame).
+// box, produce no NaN and keep the mass exactly (by class, every frame): with each scene's own
+// preset (the thesis's) and with the server's default, pbf.
 #include <gtest/gtest.h>
 
 #include "bench/bench_run.h"
@@ -7,11 +8,8 @@
 
 namespace {
 
-class ScenarioHealth : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
-
-TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
-  const auto& [scene_name, method] = GetParam();
-  const sph::Scene s = scene::loadScene(scene_name);
+void expectHealthyRun(const std::string& scene_name, const std::string& method, const std::string& preset) {
+  const sph::Scene s = scene::loadScene(scene_name, scene::defaultSceneDir(), preset);
   gaze::GazeRecording recording;
   bench::RunOptions options;
   options.frames = 900;
@@ -42,10 +40,25 @@ TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllScenesAllMethods, ScenarioHealth,
-                         ::testing::Combine(::testing::Values("dambreak", "dambreak_obstacles", "large_box",
-                                                              "small_box", "wave"),
-                                            ::testing::Values("regular", "surface", "gaze", "hybrid")),
-                         [](const auto& test) { return std::get<0>(test.param) + "_" + std::get<1>(test.param); });
+using SceneAndMethod = std::tuple<std::string, std::string>;
+class ScenarioHealth : public ::testing::TestWithParam<SceneAndMethod> {};
+class ScenarioHealthPbf : public ::testing::TestWithParam<SceneAndMethod> {};
+
+TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
+  expectHealthyRun(std::get<0>(GetParam()), std::get<1>(GetParam()), "");
+}
+
+TEST_P(ScenarioHealthPbf, NineHundredFramesStayInTheBoxWithoutNaN) {
+  expectHealthyRun(std::get<0>(GetParam()), std::get<1>(GetParam()), "pbf");
+}
+
+const auto kAllScenesAllMethods =
+    ::testing::Combine(::testing::Values("dambreak", "dambreak_obstacles", "large_box", "small_box", "wave"),
+                       ::testing::Values("regular", "surface", "gaze", "hybrid"));
+std::string caseName(const ::testing::TestParamInfo<SceneAndMethod>& test) {
+  return std::get<0>(test.param) + "_" + std::get<1>(test.param);
+}
+INSTANTIATE_TEST_SUITE_P(AllScenesAllMethods, ScenarioHealth, kAllScenesAllMethods, caseName);
+INSTANTIATE_TEST_SUITE_P(AllScenesAllMethods, ScenarioHealthPbf, kAllScenesAllMethods, caseName);
 
 }  // namespace

@@ -38,8 +38,8 @@ TEST(Validation, FrontIgnoresAFewSprayParticles) {
   sph::ParticleSet p(4000);
   sph::SizeClassProps props;
   props.mass = 998.29e-6;  // a 10 mm lattice
-  for (int i = 0; i < 3000; ++i) p.add(sph::Vec3(0.01f * (i % 30) + 0.005f, 0.0f, 0.0f), sph::Vec3::Zero(),
-                                       sph::SizeClass::Small, props);
+  for (int i = 0; i < 3000; ++i)
+    p.add(sph::Vec3(0.01f * (i % 30) + 0.005f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::SizeClass::Small, props);
   p.add(sph::Vec3(2.0f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::SizeClass::Small, props);  // a drop far ahead
   EXPECT_NEAR(bench::surgeFrontX(p, 998.29), 0.30, 1e-4);
   const bench::Column c = bench::measureColumn(p, 998.29, 0.0);
