@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "bench/bench_plan.h"
+#include "cli/cli_conventions.h"
 #include "process/omp_wait.h"
 #include "scene/scene_loader.h"
 
@@ -17,6 +18,7 @@ namespace {
 // Parses the command line into `request`; returns an exit code when the program should stop.
 std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& request) {
   CLI::App app{"sph_bench: run SPH scenes headless and report the thesis's measurements"};
+  cli::prepare(app, "sph_bench", "130 interrupted (the rows written so far are kept)");
   std::string export_format = "vtk";
   request.scene_dir = scene::defaultSceneDir();
   app.add_option("--scene", request.scenes, "scene name, path to a .json file, comma list, or 'all'")
@@ -29,7 +31,7 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->check(CLI::ExistingFile);
   app.add_option("--frames", request.frames, "frames (steps) to run; 0 = the scene's own count")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--threads", request.threads, "OpenMP threads")->check(CLI::Range(1, 256))->capture_default_str();
+  app.add_option("--threads", request.threads, "OpenMP threads")->check(cli::range(1, 256))->capture_default_str();
   app.add_option("--out", request.out_dir, "output folder (one subfolder per scene/method when several)")
       ->capture_default_str();
   app.add_option("--scene-dir", request.scene_dir, "folder of named scenes")->capture_default_str();
@@ -43,11 +45,7 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   app.add_option("--export-format", export_format, "snapshot format")
       ->check(CLI::IsMember({"csv", "vtk"}))
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (auto code = cli::parse(app, argc, argv)) return code;
   request.export_format = export_format == "csv" ? bench::SnapshotFormat::Csv : bench::SnapshotFormat::Vtk;
   return std::nullopt;
 }
