@@ -23,6 +23,7 @@ if [ "${1:-}" = "--checks" ]; then  # the part that runs with the trees hidden
   done
   [ -f "$prefix/share/gaze-adaptive-sph/proto/sph.proto" ] || { echo "FAIL: no sph.proto"; exit 1; }
   [ -f "$prefix/share/doc/gaze-adaptive-sph/README.md" ] || { echo "FAIL: no README"; exit 1; }
+  [ -f "$prefix/share/doc/gaze-adaptive-sph/examples/systemd/sph-server.service" ] || { echo "FAIL: no systemd example"; exit 1; }
   rm -rf "$out"
   echo "installed tree OK: $prefix"
   exit 0
