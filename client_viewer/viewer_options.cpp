@@ -17,7 +17,9 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
       "refers to) and sends Control requests. Mouse: left drag orbits, right or middle drag (or "
       "shift + left) pans, wheel zooms. Keys: R resets the view, space pauses/resumes the server, "
       "H hides the panel, Esc quits."};
-  cli::prepare(app, "sph_viewer", "3 timed out: no frame from the server within --timeout");
+  cli::prepare(app, "sph_viewer",
+               "3 timed out: no frame from the server within --timeout or --duration; 4 the snapshot could not "
+               "be written");
   app.add_option("--frames-endpoint", o.endpoints.frames, "Frame PUB socket of the server (SUB, newest only)")
       ->capture_default_str();
   app.add_option("--gaze-endpoint", o.endpoints.gaze, "Gaze input of the server (--mouse-gaze sends here)")
