@@ -9,7 +9,6 @@ import signal
 import socket
 import subprocess
 import tempfile
-import time
 import unittest
 
 BIN = os.environ["SPH_BIN_DIR"]
@@ -28,7 +27,7 @@ def run(program, *args, **kwargs):
 
 
 def any_port_endpoint():
-    return "tcp://127.0.0.1:*"
+    return "tcp://127.0.0.1:*"  # the server picks a free port and logs it
 
 
 class VersionAndHelp(unittest.TestCase):
@@ -134,6 +133,29 @@ class StreamsAndExitCodes(unittest.TestCase):
         self.assertEqual(r.stdout, "")
         self.assertIn("never sent a sample", r.stderr)
 
+    def test_keygen_report_on_stdout_refusal_on_stderr(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = run("sph_keygen", "alice", "--role", "viewer", "--out", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("wrote", r.stdout)
+            self.assertEqual(r.stderr, "")
+            again = run("sph_keygen", "alice", "--out", out)  # never overwrites a key: a failed run
+            self.assertEqual(again.returncode, 1)
+            self.assertEqual(again.stdout, "")
+            self.assertIn("sph_keygen:", again.stderr)
+
+    def test_relay_logs_on_stderr_and_stops_on_sigterm(self):
+        relay = subprocess.Popen([os.path.join(BIN, "sph_relay"), "--upstream", "tcp://127.0.0.1:1", "--endpoint",
+                                  any_port_endpoint(), "--status-interval", "0"], stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE, text=True, env=ENV)
+        first = relay.stderr.readline()  # it is up once it has logged its endpoint
+        self.assertIn("endpoint relay", first)
+        relay.send_signal(signal.SIGTERM)
+        out, err = relay.communicate(timeout=DEADLINE_S)
+        self.assertEqual(relay.returncode, 0, err)
+        self.assertEqual(out, "")
+        self.assertIn("SIGTERM received", err)
+
     def test_bench_report_on_stdout_progress_on_stderr(self):
         with tempfile.TemporaryDirectory() as out:
             r = run("sph_bench", "--scene", "small_box", "--frames", "2", "--out", out)
@@ -164,14 +186,18 @@ class StreamsAndExitCodes(unittest.TestCase):
     def test_viewer_without_server_names_the_endpoint_and_exits_3(self):
         if subprocess.run(["which", "xvfb-run"], capture_output=True).returncode != 0:
             self.skipTest("xvfb-run not installed")
-        with socket.socket() as held, tempfile.TemporaryDirectory() as out:
-            held.bind(("127.0.0.1", 0))
-            endpoint = f"tcp://127.0.0.1:{held.getsockname()[1]}"
-            r = subprocess.run(["xvfb-run", "-a", os.path.join(BIN, "sph_viewer"), "--frames-endpoint", endpoint,
-                                "--snapshot", os.path.join(out, "x.png"), "--timeout", "1", "--width", "160",
-                                "--height", "120"], capture_output=True, text=True, env=ENV, timeout=DEADLINE_S)
-        self.assertEqual(r.returncode, 3, r.stderr)
-        self.assertIn(f"no frame from a server at {endpoint}", r.stderr)
+        # --timeout, and --duration (what the main command uses headless): both say where they waited.
+        for limit in (["--timeout", "1"], ["--duration", "1"]):
+            with self.subTest(limit=limit[0]), socket.socket() as held, tempfile.TemporaryDirectory() as out:
+                held.bind(("127.0.0.1", 0))
+                endpoint = f"tcp://127.0.0.1:{held.getsockname()[1]}"
+                r = subprocess.run(["xvfb-run", "-a", os.path.join(BIN, "sph_viewer"), "--frames-endpoint", endpoint,
+                                    "--snapshot", os.path.join(out, "x.png"), *limit, "--width", "160", "--height",
+                                    "120"], capture_output=True, text=True, env=ENV, timeout=DEADLINE_S)
+                self.assertEqual(r.returncode, 3, r.stderr)
+                self.assertIn(f"waiting for frames from {endpoint}", r.stderr)
+                self.assertIn(f"no frame from a server at {endpoint}", r.stderr)
+                self.assertEqual(r.stdout, "")
 
 
 class MainCommand(unittest.TestCase):
