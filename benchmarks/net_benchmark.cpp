@@ -1,4 +1,4 @@
-// Benchmarks of sph_server's network path (issue 4, DESIGN.md section 8). Figures, not tests:
+// Benchmarks of sph_server's network path (issue 4, docs/design.md section 8). Figures, not tests:
 //   EncodePublish/<encoding>: encode a 20,000-particle frame and publish it on an XPUB with one
 //     reading subscriber (target <= 1 ms).
 //   GazeToRefinedFrame/<scene>: real-time server (gaze method, 60 frames/s; dambreak, then a

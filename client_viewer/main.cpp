@@ -1,4 +1,4 @@
-// sph_viewer: the OpenGL viewer of the gaze-adaptive SPH server (DESIGN.md sections 1 and 7).
+// sph_viewer: the OpenGL viewer of the gaze-adaptive SPH server (docs/design.md sections 1 and 7).
 #include <csignal>
 
 #include "viewer_app.h"

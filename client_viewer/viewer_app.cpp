@@ -87,6 +87,7 @@ ViewerApp::ViewerApp(const ViewerOptions& options)
 }
 
 ExitCode ViewerApp::run() {
+  std::fprintf(stderr, "sph_viewer: waiting for frames from %s\n", options_.endpoints.frames.c_str());
   started_ = Clock::now();
   last_fps_time_ = started_;
   last_gaze_time_ = started_ - kMouseGazePeriod;
@@ -115,14 +116,30 @@ ExitCode ViewerApp::run() {
     const bool timed_out =
         options_.timeout_s > 0.0 && std::chrono::duration<double>(now - started_).count() > options_.timeout_s;
     const bool sim_time_reached = options_.snapshot_at_s >= 0.0 && frame_ && frame_->sim_time >= options_.snapshot_at_s;
-    const bool snapshot_now = !options_.snapshot.empty() && (frames_done || sim_time_reached || timed_out);
+    const bool duration_done =
+        options_.duration_s > 0.0 && std::chrono::duration<double>(now - started_).count() >= options_.duration_s;
+    const bool snapshot_now =
+        !options_.snapshot.empty() && (frames_done || sim_time_reached || timed_out || duration_done);
     if (snapshot_now) writeSnapshot();
     target_.blitToWindow();
     glfwSwapBuffers(window);
     countRender(new_frame, now);
     if (timed_out && exit_code_ == ExitCode::kOk) {
-      std::fprintf(stderr, "sph_viewer: timeout after %.1f s with %d of %d frames\n", options_.timeout_s, frames_shown_,
-                   options_.frames);
+      if (frames_shown_ == 0) {
+        // The usual cause is no server at all: say where the viewer looked, not only that it gave up.
+        std::fprintf(stderr,
+                     "sph_viewer: no frame from a server at %s within %.1f s (is sph_server running there? "
+                     "--frames-endpoint names another); exit code 3\n",
+                     options_.endpoints.frames.c_str(), options_.timeout_s);
+      } else {
+        std::fprintf(stderr, "sph_viewer: timeout after %.1f s with %d of %d frames from %s; exit code 3\n",
+                     options_.timeout_s, frames_shown_, options_.frames, options_.endpoints.frames.c_str());
+      }
+      exit_code_ = ExitCode::kTimeout;
+    }
+    if (duration_done && frames_shown_ == 0 && exit_code_ == ExitCode::kOk) {
+      std::fprintf(stderr, "sph_viewer: no frame from a server at %s within %.1f s; exit code 3\n",
+                   options_.endpoints.frames.c_str(), options_.duration_s);
       exit_code_ = ExitCode::kTimeout;
     }
     if (snapshot_now || frames_done || timed_out) break;

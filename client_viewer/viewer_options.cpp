@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "cli/cli_conventions.h"
 #include "net/curve_cli.h"
 
 namespace viewer {
@@ -16,7 +17,9 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
       "refers to) and sends Control requests. Mouse: left drag orbits, right or middle drag (or "
       "shift + left) pans, wheel zooms. Keys: R resets the view, space pauses/resumes the server, "
       "H hides the panel, Esc quits."};
-  app.get_formatter()->column_width(34);
+  cli::prepare(app, "sph_viewer",
+               "3 timed out: no frame from the server within --timeout or --duration; 4 the snapshot could not "
+               "be written");
   app.add_option("--frames-endpoint", o.endpoints.frames, "Frame PUB socket of the server (SUB, newest only)")
       ->capture_default_str();
   app.add_option("--gaze-endpoint", o.endpoints.gaze, "Gaze input of the server (--mouse-gaze sends here)")
@@ -28,23 +31,23 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   curve::addClientOptions(app, curve_files);
   app.add_option("--viewer-id", o.viewer_id, "Id sent with every camera pose (default viewer-<pid>)");
   app.add_option("--width", o.width, "Window width in screen coordinates")
-      ->check(CLI::Range(64, 8192))
+      ->check(cli::range(64, 8192))
       ->capture_default_str();
   app.add_option("--height", o.height, "Window height in screen coordinates")
-      ->check(CLI::Range(64, 8192))
+      ->check(cli::range(64, 8192))
       ->capture_default_str();
   app.add_flag("--mouse-gaze", o.mouse_gaze, "Send the cursor as gaze (source_id \"mouse\")");
   std::array<float, 2> gaze_at{};
   auto* gaze_at_opt =
       app.add_option("--gaze-at", gaze_at, "Send a fixed gaze point x y (0..1, origin top left) instead of the mouse")
-          ->check(CLI::Range(0.0f, 1.0f))
+          ->check(cli::range(0, 1))
           ->excludes("--mouse-gaze");
   app.add_flag("!--no-panel", o.panel, "Hide the statistics and control panel");
   app.add_flag("!--no-vsync", o.vsync, "Render as fast as possible instead of at the display rate");
   std::map<std::string, RenderMode> renders{{"fluid", RenderMode::kFluid}, {"particles", RenderMode::kParticles}};
   app.add_option("--render", o.render,
                  "fluid (a liquid surface, the default) or particles (spheres by size class, for research)")
-      ->transform(CLI::CheckedTransformer(renders, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(renders, CLI::ignore_case).description("fluid|particles"));
   std::map<std::string, RenderDebug> debugs{{"none", RenderDebug::kNone},
                                             {"normals", RenderDebug::kNormals},
                                             {"depth", RenderDebug::kDepth},
@@ -52,19 +55,19 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   app.add_option("--render-debug", o.render_debug,
                  "Encode a pass instead of shading: normals (view space as RGB), depth or thickness (metres as "
                  "24-bit fixed point; thickness in fluid mode only); see README")
-      ->transform(CLI::CheckedTransformer(debugs, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(debugs, CLI::ignore_case).description("none|normals|depth|thickness"));
   app.add_option("--fluid-scale", o.fluid_scale,
                  "Fluid passes at 1/N of the resolution each way (default: 2 on software GL, 1 on a GPU)")
-      ->check(CLI::Range(1, 4));
+      ->check(cli::range(1, 4));
   std::map<std::string, ColourMode> colours{{"class", ColourMode::kSizeClass}, {"speed", ColourMode::kSpeed}};
   app.add_option("--colour,--color", o.colour,
                  "Particles mode colour: class (SMALL blue, LARGE red) or speed (needs velocities in frames)")
-      ->transform(CLI::CheckedTransformer(colours, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(colours, CLI::ignore_case).description("class|speed"));
   std::array<float, 3> eye{}, target{};
   auto* eye_opt = app.add_option("--eye", eye, "Camera eye x y z (default: the scene's camera)");
   auto* target_opt = app.add_option("--target", target, "Camera target x y z");
   app.add_option("--fov", o.fov_y_degrees, "Vertical field of view, degrees")
-      ->check(CLI::Range(5.0f, 150.0f))
+      ->check(cli::range(5, 150))
       ->capture_default_str();
   app.add_option("--snapshot", o.snapshot, "Write the picture to this PNG and exit (hidden window)");
   bool visible_flag = false;
@@ -76,37 +79,38 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
                                 "With --snapshot: take it at the first frame of at least this sim time (s), not "
                                 "after --frames")
                      ->check(CLI::NonNegativeNumber);
+  auto* duration_opt = app.add_option("--duration", o.duration_s,
+                                      "With --snapshot: take it after this many seconds of wall time (exit 3 "
+                                      "if no frame came by then), not after --frames")
+                           ->check(cli::range(0, 86400));
   auto* timeout_opt =
       app.add_option("--timeout", o.timeout_s, "Give up after this many seconds (exit 3; default 30 with --snapshot)")
           ->check(CLI::NonNegativeNumber);
   app.add_flag("--report", o.report, "Print render rate and frame-arrival-to-pixels times on exit");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (auto code = cli::parse(app, argc, argv)) return *code;
   try {
     o.endpoints.curve = curve::loadClientFiles(curve_files);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sph_viewer: %s\n", e.what());
-    return 2;
+    if (curve::exitCodeFor(e) == cli::kExitFailure) {
+      std::fprintf(stderr, "sph_viewer: %s\n", e.what());
+      return cli::kExitFailure;
+    }
+    return cli::usageError(app, e.what());
   }
   if (gaze_at_opt->count() > 0) o.gaze_at = gaze_at;
   if (eye_opt->count() > 0) o.eye = eye;
   if (target_opt->count() > 0) o.target = target;
   if (o.eye.has_value() != o.target.has_value()) {
-    std::fprintf(stderr, "sph_viewer: --eye and --target go together\n");
-    return 2;
+    return cli::usageError(app, "--eye and --target go together");
   }
   if (o.render_debug == RenderDebug::kThickness && o.render != RenderMode::kFluid) {
-    std::fprintf(stderr, "sph_viewer: --render-debug thickness needs --render fluid\n");
-    return 2;
+    return cli::usageError(app, "--render-debug thickness needs --render fluid");
   }
   if (o.viewer_id.empty()) o.viewer_id = "viewer-" + std::to_string(::getpid());
   if (!o.snapshot.empty()) {
     o.visible = visible_opt->count() > 0;
-    if (timeout_opt->count() == 0) o.timeout_s = 30.0;
-    if (o.frames == 0 && at_opt->count() == 0) o.frames = 1;
+    if (timeout_opt->count() == 0) o.timeout_s = duration_opt->count() > 0 ? 0.0 : 30.0;  // --duration is its own limit
+    if (o.frames == 0 && at_opt->count() == 0 && duration_opt->count() == 0) o.frames = 1;
   }
   return std::nullopt;
 }

@@ -33,6 +33,7 @@ struct ViewerOptions {
   bool visible = true;          // resolved: false for --snapshot unless --visible was given
   int frames = 0;               // server frames to show before the snapshot / exit (0: run until closed)
   double snapshot_at_s = -1.0;  // with --snapshot: at the first frame of this sim time instead (< 0: off)
+  double duration_s = 0.0;      // with --snapshot: take it after this much wall time (0: off)
   double timeout_s = 0.0;       // give up after this long (0: never; --snapshot defaults to 30)
   bool report = false;          // print render rate and frame-arrival-to-pixels figures on exit
 };

@@ -12,8 +12,15 @@
 namespace viewer {
 
 GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool visible, bool vsync) {
-  glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
-  if (!glfwInit()) throw WindowError("cannot start GLFW (no display? run under xvfb-run)");
+  glfwSetErrorCallback(
+      [](int code, const char* text) { std::fprintf(stderr, "sph_viewer: GLFW error %d: %s\n", code, text); });
+  if (!glfwInit()) {
+    // A hidden window (--snapshot) still needs an X server: suggest the one thing that helps.
+    throw WindowError(visible
+                          ? "cannot start GLFW (no display?): run it under xvfb-run -a, e.g. with --snapshot FILE.png"
+                          : "cannot start GLFW (no display?): --snapshot still needs an X server; run it under "
+                            "xvfb-run -a");
+  }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

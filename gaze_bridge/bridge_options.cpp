@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "cli/cli_conventions.h"
 #include "net/curve_cli.h"
 #include "paced_source.h"
 
@@ -21,12 +22,12 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
 
   app.add_option("--pupil-host", o.pupil.host, "Pupil Capture host")->capture_default_str();
   app.add_option("--pupil-port", o.pupil.remote_port, "Pupil Remote port")
-      ->check(CLI::Range(1, 65535))
+      ->check(cli::range(1, 65535))
       ->capture_default_str();
   app.add_option("--pupil-surface", o.pupil.surface, "Surface name (topic surfaces.<name>)")->capture_default_str();
   app.add_option("--gazepoint-host", o.gazepoint.host, "Gazepoint Control host")->capture_default_str();
   app.add_option("--gazepoint-port", o.gazepoint.port, "Open Gaze API port")
-      ->check(CLI::Range(1, 65535))
+      ->check(cli::range(1, 65535))
       ->capture_default_str();
   app.add_option("--tracker-timeout", o.tracker_timeout_s, "Seconds of tracker silence before reconnecting")
       ->check(CLI::PositiveNumber)
@@ -44,12 +45,12 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--synthetic-blink", o.synthetic.blink_probability, "Chance per fixation of a blink")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(cli::range(0, 1))
       ->capture_default_str();
 
   auto& p = o.bridge.processor;
   app.add_option("--min-confidence", p.min_confidence, "Drop samples below this confidence")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(cli::range(0, 1))
       ->capture_default_str();
   app.add_option("--max-gap", p.max_gap_s, "Gaps up to this many seconds are bridged; longer ones send 'lost'")
       ->check(CLI::PositiveNumber)

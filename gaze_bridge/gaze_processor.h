@@ -24,7 +24,7 @@ struct ProcessorParams {
   OneEuroParams one_euro;
   bool ivt = false;
   // I-VT threshold in screen widths per second; vertical motion is scaled by 1 / screen_aspect so the
-  // speed is isotropic. 0.6 widths/s is about 30 deg/s on DESIGN.md's reference set-up (531 mm wide
+  // speed is isotropic. 0.6 widths/s is about 30 deg/s on docs/design.md's reference set-up (531 mm wide
   // screen at 600 mm: 1 deg = 10.5 mm = 0.0197 widths).
   double ivt_threshold = 0.6;
   double screen_aspect = 531.0 / 299.0;  // width / height

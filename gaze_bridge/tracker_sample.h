@@ -22,7 +22,7 @@ inline std::int64_t steadyNowNs() {
       .count();
 }
 
-// System clock in microseconds since the Unix epoch: GazeSample.bridge_time_us (DESIGN.md section 6).
+// System clock in microseconds since the Unix epoch: GazeSample.bridge_time_us (docs/design.md section 6).
 inline std::int64_t systemNowUs() {
   return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();

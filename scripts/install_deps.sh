@@ -11,6 +11,7 @@ packages=(
   libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth libxtst-dev
   gnuplot-nox python3-zmq python3-protobuf python3-numpy
   clang libclang-rt-14-dev
+  dpkg-dev file  # cpack's Debian package: dpkg-shlibdeps finds the dependencies, file tells it the ELF files
 )
 missing=()
 for p in "${packages[@]}"; do

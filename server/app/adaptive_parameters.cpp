@@ -50,6 +50,40 @@ void adaptiveParameters(const sph::AdaptiveConfig& config, std::map<std::string,
   out["surface_includes_walls"] = config.surface_includes_walls ? 1.0 : 0.0;
 }
 
+std::string adaptiveParameterNames() {
+  std::string names;
+  for (const auto& entry : doubleFields()) names += (names.empty() ? "" : ", ") + entry.first;
+  return names + ", surface_includes_walls";
+}
+
+bool parseAdaptiveSetting(const std::string& setting, std::map<std::string, double>& overrides, std::string& error) {
+  const auto eq = setting.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    error = "expected NAME=VALUE";
+    return false;
+  }
+  const std::string name = setting.substr(0, eq);
+  const std::string value = setting.substr(eq + 1);
+  double number = 0.0;
+  std::size_t used = 0;
+  try {
+    number = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;  // std::stod's own message ("stod") means nothing to a user
+  }
+  if (used == 0 || used != value.size()) {
+    error = "expected a number after '=', got '" + value + "'";
+    return false;
+  }
+  sph::AdaptiveConfig probe;
+  bool known = false;
+  error = setAdaptiveParameter(probe, name, number, known);
+  if (!known) error = "unknown setting '" + net::echoText(name) + "'; known: " + adaptiveParameterNames();
+  if (!error.empty()) return false;
+  overrides[name] = number;
+  return true;
+}
+
 sph::AdaptiveConfig withOverrides(sph::AdaptiveConfig config, const std::map<std::string, double>& overrides) {
   for (const auto& [name, value] : overrides) {
     bool known = false;

@@ -14,6 +14,11 @@ namespace app {
 std::string setAdaptiveParameter(sph::AdaptiveConfig& config, const std::string& name, double value, bool& known);
 // The current values by name.
 void adaptiveParameters(const sph::AdaptiveConfig& config, std::map<std::string, double>& out);
+// The names setAdaptiveParameter knows, comma-separated (for messages).
+std::string adaptiveParameterNames();
+// Parses one command-line "NAME=VALUE" into `overrides`; false with `error` in a user's words (an
+// unknown name lists the known ones) when it is not one.
+bool parseAdaptiveSetting(const std::string& setting, std::map<std::string, double>& overrides, std::string& error);
 // Applies every override, then AdaptiveConfig::validate; throws std::invalid_argument naming the first bad one.
 sph::AdaptiveConfig withOverrides(sph::AdaptiveConfig config, const std::map<std::string, double>& overrides);
 

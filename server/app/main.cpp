@@ -11,7 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "app/adaptive_parameters.h"
 #include "app/server.h"
+#include "cli/cli_conventions.h"
 #include "net/curve_cli.h"
 #include "net/fd_limit.h"
 #include "process/omp_wait.h"
@@ -40,7 +42,7 @@ CLI::Validator publishHzValidator() {
         try {
           hz = std::stod(text);
         } catch (const std::exception&) {
-          return "not a number: " + text;
+          return "expected a number, got '" + text + "'";
         }
         return app::publishHzError(hz);
       },
@@ -74,7 +76,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_flag("--neighbor-counts", sim.neighbor_counts,
                "add each particle's neighbour count (1 byte) to every frame (sph_viewer draws spray by it)");
   cli.add_option("--threads", sim.threads, "OpenMP threads for the step")
-      ->check(CLI::Range(1, 256))
+      ->check(cli::range(1, 256))
       ->capture_default_str();
   cli.add_option("--max-steps", sim.max_steps, "stop after this many steps (0: run until SIGINT/SIGTERM)")
       ->check(CLI::NonNegativeNumber)
@@ -109,12 +111,12 @@ void addOptions(CLI::App& cli, CliOptions& o) {
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
                  "surface_includes_walls, gaze_*); repeatable");
   cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
-      ->check(CLI::Range(0.0, 86400.0))
+      ->check(cli::range(0, 86400))
       ->capture_default_str();
   curve::addServerOptions(cli, o.curve);
   cli.add_option("--max-peers", o.max_peers,
                  "connections each socket takes at a time (fewer when the descriptor limit asks)")
-      ->check(CLI::Range(1, 100000))
+      ->check(cli::range(1, 100000))
       ->capture_default_str();
   cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))
@@ -126,10 +128,12 @@ void addOptions(CLI::App& cli, CliOptions& o) {
 int main(int argc, char** argv) {
   process::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
   CLI::App cli{"sph_server: gaze-adaptive SPH water over ZeroMQ (frames PUB, gaze, camera pose, control)"};
+  cli::prepare(cli, "sph_server");
   CliOptions o;
   addOptions(cli, o);
-  CLI11_PARSE(cli, argc, argv);
+  if (auto code = cli::parse(cli, argc, argv)) return *code;
   spdlog::set_level(spdlog::level::from_str(o.log_level));
+  cli::logToStderr();  // stdout stays free for data; every log line and error goes to stderr
   if (o.server.sim.preset == "scene") o.server.sim.preset.clear();
 
   if (!o.method.empty()) {
@@ -139,16 +143,9 @@ int main(int argc, char** argv) {
   }
   o.server.sim.adaptive_overrides = o.gaze;
   for (const std::string& setting : o.adaptive) {
-    const auto eq = setting.find('=');
-    try {
-      if (eq == std::string::npos) throw std::invalid_argument("expected NAME=VALUE");
-      std::size_t used = 0;
-      const std::string value = setting.substr(eq + 1);
-      o.server.sim.adaptive_overrides[setting.substr(0, eq)] = std::stod(value, &used);
-      if (used != value.size()) throw std::invalid_argument("not a number");
-    } catch (const std::exception& e) {
-      spdlog::error("--adaptive {}: {}", setting, e.what());
-      return 2;
+    std::string error;
+    if (!app::parseAdaptiveSetting(setting, o.server.sim.adaptive_overrides, error)) {
+      return cli::usageError(cli, "--adaptive " + setting + ": " + error);
     }
   }
   net::inputSocketTypeByName(o.gaze_socket, o.server.net.gaze_type);

@@ -1,7 +1,9 @@
 // sph_bench: headless runs of scenes x methods with no sockets; prints and writes the thesis's
 // measurements (4.1): mean ms per phase, steps per second, particle counts, plus health checks.
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -9,15 +11,20 @@
 #include <optional>
 
 #include "bench/bench_plan.h"
+#include "cli/cli_conventions.h"
 #include "process/omp_wait.h"
 #include "scene/scene_loader.h"
 
 namespace {
 
+std::atomic<bool> g_stop{false};
+extern "C" void onStopSignal(int) { g_stop.store(true); }
+
 // Parses the command line into `request`; returns an exit code when the program should stop.
 std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& request) {
   CLI::App app{"sph_bench: run SPH scenes headless and report the thesis's measurements"};
-  std::string export_format = "vtk";
+  cli::prepare(app, "sph_bench", "130 interrupted (the rows written so far are kept)");
+  std::string export_format = "vtu";
   request.scene_dir = scene::defaultSceneDir();
   app.add_option("--scene", request.scenes, "scene name, path to a .json file, comma list, or 'all'")
       ->capture_default_str();
@@ -37,7 +44,7 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->check(CLI::ExistingFile);
   app.add_option("--save-state", request.save_state,
                  "write a checkpoint here after the last frame (one scene and method)");
-  app.add_option("--threads", request.threads, "OpenMP threads")->check(CLI::Range(1, 256))->capture_default_str();
+  app.add_option("--threads", request.threads, "OpenMP threads")->check(cli::range(1, 256))->capture_default_str();
   app.add_option("--out", request.out_dir, "output folder (one subfolder per scene/method when several)")
       ->capture_default_str();
   app.add_option("--scene-dir", request.scene_dir, "folder of named scenes")->capture_default_str();
@@ -48,15 +55,14 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->capture_default_str();
   app.add_option("--export-every", request.export_every, "write a particle snapshot every K frames (0 = never)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--export-format", export_format, "snapshot format")
-      ->check(CLI::IsMember({"csv", "vtk"}))
+  app.add_option("--export-format", export_format,
+                 "vtu (binary, with a particles.pvd time index for ParaView), vtk (legacy ASCII) or csv")
+      ->check(CLI::IsMember({"vtu", "vtk", "csv"}))
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
-  request.export_format = export_format == "csv" ? bench::SnapshotFormat::Csv : bench::SnapshotFormat::Vtk;
+  if (auto code = cli::parse(app, argc, argv)) return code;
+  request.export_format = export_format == "csv"   ? bench::SnapshotFormat::Csv
+                          : export_format == "vtk" ? bench::SnapshotFormat::Vtk
+                                                   : bench::SnapshotFormat::Vtu;
   return std::nullopt;
 }
 
@@ -82,6 +88,13 @@ int main(int argc, char** argv) {
   process::applyDefaultOmpWaitPolicy(argv);  // first: it may re-execute the program
   bench::BenchRequest request;
   if (auto code = parseRequest(argc, argv, request)) return *code;
+  // Ctrl-C (or SIGTERM) ends the runs between frames; what they recorded is still written.
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  request.stop = &g_stop;
   try {
     const bench::BenchPlan plan = bench::planBench(request);
     ProgressLines progress;
@@ -94,6 +107,11 @@ int main(int argc, char** argv) {
       const std::filesystem::path table = std::filesystem::path(request.out_dir) / "comparison.md";
       std::ofstream(table) << bench::comparisonMarkdown(summaries);
       std::printf("comparison table -> %s\n", table.string().c_str());
+    }
+    if (g_stop.load()) {
+      std::fprintf(stderr, "sph_bench: interrupted; the frames run so far are kept in %s (exit code 130)\n",
+                   request.out_dir.c_str());
+      return 130;
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph_bench: error: %s\n", e.what());

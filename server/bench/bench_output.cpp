@@ -124,12 +124,13 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
   std::ofstream out = openOut(path);
   const std::size_t n = p.size();
   if (format == SnapshotFormat::Csv) {
-    out << "id,x,y,z,vx,vy,vz,density,pressure,size_class\n";
+    out << "id,x,y,z,vx,vy,vz,density,pressure,mass,radius,size_class\n";
     for (std::size_t i = 0; i < n; ++i) {
       const auto& x = p.position[i];
       const auto& u = p.velocity[i];
       out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ',' << u.z()
-          << ',' << p.density[i] << ',' << p.pressure[i] << ',' << sph::sizeClassName(p.size_class[i]) << '\n';
+          << ',' << p.density[i] << ',' << p.pressure[i] << ',' << p.mass[i] << ',' << p.radius[i] << ','
+          << sph::sizeClassName(p.size_class[i]) << '\n';
     }
     return;
   }

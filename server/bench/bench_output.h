@@ -27,7 +27,8 @@ void writeFramesCsv(const RunResult& run, const std::string& path);
 // One line for the terminal.
 std::string summaryText(const RunResult& run, const Summary& s);
 
-enum class SnapshotFormat { Csv, Vtk };
+// Vtu: binary VTK XML with a .pvd time index (vtu_export.h); Vtk: legacy ASCII; Csv: one row a particle.
+enum class SnapshotFormat { Csv, Vtk, Vtu };
 void writeSnapshot(const sph::ParticleSet& particles, SnapshotFormat format, const std::string& path);
 
 }  // namespace bench

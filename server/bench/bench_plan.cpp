@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "bench/vtu_export.h"
 #include "scene/scene_loader.h"
 
 namespace bench {
@@ -21,7 +22,42 @@ std::vector<std::string> splitList(const std::string& text) {
   return items;
 }
 
-const char* extensionOf(SnapshotFormat format) { return format == SnapshotFormat::Csv ? "csv" : "vtk"; }
+const char* extensionOf(SnapshotFormat format) {
+  switch (format) {
+    case SnapshotFormat::Csv:
+      return "csv";
+    case SnapshotFormat::Vtk:
+      return "vtk";
+    case SnapshotFormat::Vtu:
+      break;
+  }
+  return "vtu";
+}
+
+// A run's particle snapshots: particles_NNNNN.EXT every export_every frames, frame 0 included; for
+// VTU also particles.pvd, rewritten with each file so it is complete wherever the run stops.
+class SnapshotSeries {
+ public:
+  SnapshotSeries(const std::filesystem::path& dir, SnapshotFormat format)
+      : dir_(dir), format_(format), index_((dir / "particles.pvd").string()) {}
+  void write(const sph::ParticleSet& particles, int frame, double time) {
+    char name[64];
+    std::snprintf(name, sizeof name, "particles_%05d.%s", frame, extensionOf(format_));
+    const std::string path = (dir_ / name).string();
+    if (format_ != SnapshotFormat::Vtu) {
+      writeSnapshot(particles, format_, path);
+      return;
+    }
+    writeVtu(particles, time, path);
+    index_.add(time, name);
+    index_.write();
+  }
+
+ private:
+  std::filesystem::path dir_;
+  SnapshotFormat format_;
+  PvdIndex index_;
+};
 
 }  // namespace
 
@@ -71,11 +107,12 @@ BenchPlan planBench(const BenchRequest& request) {
   return plan;
 }
 
-void runInTurns(std::span<SceneRun* const> runs, int turn) {
-  for (bool left = true; left;) {
+void runInTurns(std::span<SceneRun* const> runs, int turn, const std::atomic<bool>* stop) {
+  const auto stopped = [stop] { return stop != nullptr && stop->load(); };
+  for (bool left = true; left && !stopped();) {
     left = false;
     for (SceneRun* run : runs) {
-      for (int k = 0; (turn <= 0 || k < turn) && !run->done(); ++k) run->stepFrame();
+      for (int k = 0; (turn <= 0 || k < turn) && !run->done() && !stopped(); ++k) run->stepFrame();
       left = left || !run->done();
     }
   }
@@ -87,6 +124,7 @@ std::vector<RunSummary> runPlan(const BenchPlan& plan, const BenchRequest& reque
   for (const std::vector<PlannedRun>& scene_runs : plan.runs) {
     std::vector<std::unique_ptr<SceneRun>> runs;
     std::vector<double> total_ms(scene_runs.size(), 0.0);
+    std::vector<std::unique_ptr<SnapshotSeries>> series(scene_runs.size());
     for (std::size_t r = 0; r < scene_runs.size(); ++r) {
       const PlannedRun& planned = scene_runs[r];
       std::filesystem::create_directories(planned.dir);
@@ -97,29 +135,37 @@ std::vector<RunSummary> runPlan(const BenchPlan& plan, const BenchRequest& reque
       options.load_state = request.load_state;
       options.save_state = request.save_state;
       const int frames = request.frames > 0 ? request.frames : planned.scene->frames;
+      if (request.export_every > 0) series[r] = std::make_unique<SnapshotSeries>(planned.dir, request.export_format);
       options.on_frame = [&, r, frames](const sph::Simulation& sim, const FrameRecord& record) {
         total_ms[r] += record.ms.total_ms;
-        if (request.export_every > 0 && record.frame % request.export_every == 0) {
-          char name[64];
-          std::snprintf(name, sizeof name, "particles_%05d.%s", record.frame, extensionOf(request.export_format));
-          writeSnapshot(sim.particles(), request.export_format, (scene_runs[r].dir / name).string());
+        if (series[r] && record.frame % request.export_every == 0) {
+          series[r]->write(sim.particles(), record.frame, record.sim_time);
         }
         if (on_progress) on_progress(scene_runs[r], record, frames, total_ms[r] / record.frame);
       };
       runs.push_back(std::make_unique<SceneRun>(*planned.scene, planned.method, options));
+      // Frame 0: the state the run starts from, so a time series begins where the scene does.
+      if (series[r]) series[r]->write(runs.back()->simulation().particles(), 0, runs.back()->simulation().time());
     }
     std::vector<SceneRun*> order;
     for (auto& run : runs) order.push_back(run.get());
-    runInTurns(order, request.interleave);
+    runInTurns(order, request.interleave, request.stop);
+    const bool stopped = request.stop != nullptr && request.stop->load();
     for (std::size_t r = 0; r < runs.size(); ++r) {
       const RunResult result = runs[r]->result();
-      runs[r].reset();  // free the simulation before the next scene's runs are made
+      runs[r].reset();               // free the simulation before the next scene's runs are made
+      if (result.records.empty()) {  // interrupted before its first frame: nothing to keep
+        std::error_code ec;
+        std::filesystem::remove(scene_runs[r].dir, ec);  // only when empty
+        continue;
+      }
       RunSummary summary{result, summarize(result)};
       writeSummaryJson(summary.run, summary.summary, (scene_runs[r].dir / "summary.json").string());
       writeFramesCsv(summary.run, (scene_runs[r].dir / "frames.csv").string());
       if (on_summary) on_summary(summary, scene_runs[r]);
       summaries.push_back(std::move(summary));
     }
+    if (stopped) break;
   }
   return summaries;
 }

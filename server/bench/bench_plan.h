@@ -4,6 +4,7 @@
 // machine falls on all of them alike and their ratios hold.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -35,6 +36,8 @@ struct BenchRequest {
   std::string preset;      // thesis, pbf, dfsph, or empty: each scene's own
   std::string load_state;  // a checkpoint to continue from (one scene, one method)
   std::string save_state;  // where to write the checkpoint at the end (one scene, one method)
+  // Set (by a signal) to stop early: the runs stop between frames and keep the rows recorded so far.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // One run of the plan: a scene, a method, where its files go and the gaze it replays.
@@ -58,14 +61,16 @@ BenchPlan planBench(const BenchRequest& request);
 
 // Runs every run to its end in turns of `turn` frames each, in the order given; 0: each start to
 // end, one after another. Each run computes exactly what it computes alone (tested).
-void runInTurns(std::span<SceneRun* const> runs, int turn);
+void runInTurns(std::span<SceneRun* const> runs, int turn, const std::atomic<bool>* stop = nullptr);
 
 // Progress of one run: (run, frames done, frames in all, mean step ms so far, particles).
 using ProgressFn = std::function<void(const PlannedRun&, const FrameRecord&, int frames, double mean_ms)>;
 
 // Runs the plan scene by scene (runInTurns) and writes each run's summary.json and frames.csv
 // (and snapshots, when asked) into its folder; returns the runs' summaries in plan order.
-// `on_summary` is called with each run's summary as soon as it is written.
+// `on_summary` is called with each run's summary as soon as it is written. After request.stop is
+// set, the runs under way are written with the frames they have, a run with none is not written
+// (and its folder removed when empty), and no further scene starts.
 std::vector<RunSummary> runPlan(const BenchPlan& plan, const BenchRequest& request, const ProgressFn& on_progress,
                                 const std::function<void(const RunSummary&, const PlannedRun&)>& on_summary);
 

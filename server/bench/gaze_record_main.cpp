@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/cli_conventions.h"
 #include "gaze/fixation_model.h"
 #include "gaze/gaze_recording.h"
 #include "scene/scene_loader.h"
@@ -106,6 +107,7 @@ class WaterOnScreen {
 
 int main(int argc, char** argv) {
   CLI::App app{"sph_gaze_record: write a scene's synthetic gaze recording (fixations and saccades)"};
+  cli::prepare(app, "sph_gaze_record");
   std::string scene_arg = "all";
   std::string scene_dir = scene::defaultSceneDir();
   std::string out_dir;
@@ -114,11 +116,11 @@ int main(int argc, char** argv) {
   app.add_option("--scene", scene_arg, "scene name, path, or 'all'")->capture_default_str();
   app.add_option("--scene-dir", scene_dir, "folder of named scenes")->capture_default_str();
   app.add_option("--out-dir", out_dir, "where <scene>.gaze.csv goes (default: the scene folder)");
-  app.add_option("--rate", rate_hz, "samples per second")->check(CLI::Range(1.0, 2000.0))->capture_default_str();
+  app.add_option("--rate", rate_hz, "samples per second")->check(cli::range(1, 2000))->capture_default_str();
   app.add_option("--blink-probability", blink_probability, "chance per fixation of a 0.1 s gap")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(cli::range(0, 1))
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (auto code = cli::parse(app, argc, argv)) return *code;
   try {
     const std::vector<std::string> names =
         scene_arg == "all" ? scene::listScenes(scene_dir) : std::vector<std::string>{scene_arg};

@@ -11,6 +11,7 @@
 
 #include "bench/bench_run.h"
 #include "bench/validation.h"
+#include "cli/cli_conventions.h"
 #include "gaze/gaze_recording.h"
 #include "process/omp_wait.h"
 #include "scene/scene_loader.h"
@@ -192,6 +193,7 @@ int main(int argc, char** argv) {
   Options o;
   o.scene_dir = (fs::path(scene::defaultSceneDir()) / "validation").string();
   CLI::App app{"sph_validate: the fluid presets against the Martin & Moyce dam break and a tank at rest"};
+  cli::prepare(app, "sph_validate");
   app.add_option("--preset", o.presets, "presets to validate (thesis, pbf, dfsph)")
       ->delimiter(',')
       ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
@@ -201,15 +203,11 @@ int main(int argc, char** argv) {
   app.add_option("--scene-dir", o.scene_dir, "folder with martin_moyce.json and hydrostatic.json")
       ->capture_default_str();
   app.add_option("--out", o.out, "output folder")->capture_default_str();
-  app.add_option("--threads", o.threads, "OpenMP threads")->check(CLI::Range(1, 256))->capture_default_str();
+  app.add_option("--threads", o.threads, "OpenMP threads")->check(cli::range(1, 256))->capture_default_str();
   app.add_option("--hydrostatic-frames", o.hydrostatic_frames, "frames the tank settles for (0: the scene's own)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("!--no-plot", o.plot, "write no PNGs");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  if (auto code = cli::parse(app, argc, argv)) return *code;
   try {
     const fs::path dir(o.out);
     fs::create_directories(dir);
@@ -251,7 +249,7 @@ int main(int argc, char** argv) {
     std::printf("%s\n%s\n", (dir / "surge_front.md").c_str(), (dir / "hydrostatic.md").c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sph_validate: error: %s\n", e.what());
-    return 1;
+    return cli::kExitFailure;
   }
-  return 0;
+  return cli::kExitOk;
 }

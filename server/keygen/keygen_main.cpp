@@ -8,12 +8,14 @@
 #include <exception>
 #include <string>
 
+#include "cli/cli_conventions.h"
 #include "net/curve_keys.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
       "sph_keygen: makes a CURVE key pair for sph_server / sph_relay (role server) or a client (role viewer: "
       "frames, camera pose, status; role operator: also gaze and every control verb)"};
+  cli::prepare(app, "sph_keygen");
   std::string name;
   std::string role = "viewer";
   std::string out = ".";
@@ -22,7 +24,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"viewer", "operator", "server"}))
       ->capture_default_str();
   app.add_option("--out", out, "folder to write into (created if missing)")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (auto code = cli::parse(app, argc, argv)) return *code;
   try {
     const curve::Certificate certificate = curve::generateCertificate(name, role);
     curve::writeCertificates(out, name, certificate);

@@ -1,4 +1,4 @@
-// One place for the socket options DESIGN.md section 6 asks for, so every socket the server binds gets
+// One place for the socket options docs/design.md section 6 asks for, so every socket the server binds gets
 // the same limits: a size cap on every input, bounded high-water marks, heartbeats to notice dead peers,
 // and a bounded linger so shutdown never hangs on an unreachable peer.
 #pragma once

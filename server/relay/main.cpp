@@ -8,6 +8,7 @@
 #include <exception>
 #include <string>
 
+#include "cli/cli_conventions.h"
 #include "net/curve_cli.h"
 #include "net/fd_limit.h"
 #include "process/stop_signals.h"
@@ -15,6 +16,7 @@
 
 int main(int argc, char** argv) {
   CLI::App cli{"sph_relay: forwards an sph_server's frames (XSUB upstream -> PUB downstream, ZeroMQ's proxy)"};
+  cli::prepare(cli, "sph_relay");
   relay::RelayOptions options;
   curve::ServerFiles downstream_keys;
   curve::ClientFiles upstream_keys;
@@ -27,19 +29,20 @@ int main(int argc, char** argv) {
   curve::addServerOptions(cli, downstream_keys);
   curve::addClientOptions(cli, upstream_keys, "--upstream-");
   cli.add_option("--hwm", options.hwm, "frames queued per viewer before it misses some")
-      ->check(CLI::Range(1, 100000))
+      ->check(cli::range(1, 100000))
       ->capture_default_str();
   cli.add_option("--max-peers", max_peers, "viewer connections at a time (fewer when the descriptor limit asks)")
-      ->check(CLI::Range(1, 100000))
+      ->check(cli::range(1, 100000))
       ->capture_default_str();
   cli.add_option("--status-interval", status_interval_s, "seconds between status lines (0: off)")
-      ->check(CLI::Range(0.0, 86400.0))
+      ->check(cli::range(0, 86400))
       ->capture_default_str();
   cli.add_option("--log-level", log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))
       ->capture_default_str();
-  CLI11_PARSE(cli, argc, argv);
+  if (auto code = cli::parse(cli, argc, argv)) return *code;
   spdlog::set_level(spdlog::level::from_str(log_level));
+  cli::logToStderr();
 
   bool insecure = false;
   try {

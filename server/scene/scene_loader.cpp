@@ -196,6 +196,15 @@ void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
 
 std::string defaultSceneDir() {
   if (const char* env = std::getenv("SPH_SCENE_DIR"); env && *env) return env;
+  // An installed program finds the scenes installed beside it (PREFIX/bin -> PREFIX/share/...), so
+  // a package works wherever it is unpacked; a program in a build tree has none there and falls back
+  // to the source tree it was built from.
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed = exe.parent_path().parent_path() / SPH_INSTALLED_SCENE_DIR;
+    if (fs::is_directory(installed, ec)) return installed.lexically_normal().string();
+  }
   return SPH_SOURCE_SCENE_DIR;
 }
 

@@ -1,6 +1,6 @@
 // The viewer's camera as the gaze method sees it: view and projection matrices (OpenGL conventions,
 // column vectors, camera looking down -z) and a viewport in pixels. Screen coordinates are
-// normalized to 0..1 with the origin at the top left, as gaze samples are (DESIGN.md section 6).
+// normalized to 0..1 with the origin at the top left, as gaze samples are (docs/design.md section 6).
 #pragma once
 
 #include <Eigen/Core>

@@ -75,8 +75,9 @@ TEST(ServerBinary, BadAdaptiveSettingIsAnError) {
     a.insert(a.end(), {"--adaptive", "no_such=1"});
     return a;
   }());
-  EXPECT_EQ(unknown.waitExit(), 1);
-  EXPECT_NE(unknown.output.find("unknown parameter 'no_such'"), std::string::npos) << unknown.output;
+  // An unknown name is a usage error (exit 2), found before any scene loads, and lists the known names.
+  EXPECT_EQ(unknown.waitExit(), 2);
+  EXPECT_NE(unknown.output.find("unknown setting 'no_such'; known: alpha, beta"), std::string::npos) << unknown.output;
 }
 
 void expectCleanShutdown(int signal) {

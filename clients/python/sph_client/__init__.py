@@ -50,4 +50,4 @@ __all__ = [
     "perspective",
 ]
 
-__version__ = "0.1.0"
+__version__ = "1.0.0"  # the project version (CMake project(VERSION), pyproject.toml); tests/cli checks they agree

@@ -1,4 +1,4 @@
-// The adaptive methods (thesis 3.6, DESIGN.md section 3) by name, their settings and the gaze they
+// The adaptive methods (thesis 3.6, docs/design.md section 3) by name, their settings and the gaze they
 // are fed. The library knows no clock and no socket: the caller (bench or server) hands the current
 // gaze and its age to the controller before each step.
 #pragma once
@@ -34,7 +34,7 @@ struct AdaptiveConfig {
   // the fluid reaches about 1.2 l, and at scale 1 (or 1.5) the split band creeps inwards step by
   // step; 2 stops that on a resting pool (tests/adaptive) and still finds the free surface.
   double surface_normal_scale = 2.0;
-  // Gaze circle radius as a fraction of the viewport width (DESIGN.md: 2.5 degrees at 600 mm from
+  // Gaze circle radius as a fraction of the viewport width (docs/design.md: 2.5 degrees at 600 mm from
   // a 531 mm wide screen, or the thesis's "5 % view"; both about 0.05).
   double gaze_radius = 0.05;
   // Outer radius of the hysteresis ring, same units, >= gaze_radius: between the two, particles

@@ -15,13 +15,24 @@ from .report import text
 from .scenario import ScenarioError, load_scenario, single_phase
 
 
+class _OneLineParser(argparse.ArgumentParser):
+    """Usage errors as every program of the project reports them: one line on stderr, exit code 2."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: {message} (see {self.prog} --help)\n")
+
+
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    from .. import __version__
+
+    p = _OneLineParser(
         prog="sph_load",
+        epilog="Exit codes: 0 success; 1 the run saw errors; 2 usage error.",
         description="Load generator for sph_server: frame subscribers, gaze publishers, poses and control "
         "requests for a bounded time; reports drops, gaze-to-frame latency, control round trips, the "
         "server's step rate and sph_load's own CPU use.",
     )
+    p.add_argument("--version", action="version", version=f"sph_load {__version__}")
     Endpoints.add_arguments(p)
     p.add_argument("--scenario", help="JSON scenario file (phases); the traffic options below are then ignored")
     p.add_argument("--duration", type=float, default=10.0, help="seconds (default 10)")
