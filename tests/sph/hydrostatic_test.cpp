@@ -34,7 +34,7 @@ sph::Scene tank(const std::string& preset, int nx, int ny) {
 }
 
 struct Rest {
-  double mean_density_error = 0.0;  // mean |rho / rho0 - 1| below the surface layers
+  double mean_density_error = 0.0;        // mean |rho / rho0 - 1| below the surface layers
   double wall_min = 1.0, wall_max = 1.0;  // rho / rho0 of the particles at walls and floor
   double rms_speed = 0.0;
   double slope_ratio = 0.0;  // -dp/dy / (rho0 g), interior particles
@@ -87,16 +87,21 @@ Rest measure(const sph::Simulation& sim) {
 }
 
 // 10 x 10 spacings, 14 layers deep (1,400 particles, 0.3 m of water), settled for 3 s.
+// One thread: the result is the same on any count (below), and a small set on two threads of a
+// busy machine spends its time waiting at the barriers.
 void expectRest(const std::string& preset) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(1);
   sph::Simulation sim(tank(preset, 10, 14), sph::SizeClass::Small);
   ASSERT_EQ(sim.particles().size(), 1400u);
   for (int f = 0; f < 300; ++f) sim.step();
+  omp_set_num_threads(previous);
   const Rest r = measure(sim);
   std::printf("%s: mean |rho/rho0 - 1| %.5f, walls and floor [%.4f, %.4f] rho0, rms %.5f m/s, slope %.4f rho0 g\n",
               preset.c_str(), r.mean_density_error, r.wall_min, r.wall_max, r.rms_speed, r.slope_ratio);
   SCOPED_TRACE(::testing::Message() << preset << ": mean |rho/rho0 - 1| " << r.mean_density_error << ", walls ["
-                                    << r.wall_min << ", " << r.wall_max << "], rms " << r.rms_speed
-                                    << " m/s, slope " << r.slope_ratio << " rho0 g");
+                                    << r.wall_min << ", " << r.wall_max << "], rms " << r.rms_speed << " m/s, slope "
+                                    << r.slope_ratio << " rho0 g");
   EXPECT_LE(r.mean_density_error, 0.01);
   EXPECT_GE(r.wall_min, 0.98);
   EXPECT_LE(r.wall_max, 1.02);
@@ -119,9 +124,14 @@ struct State {
 State runWithThreads(const std::string& preset, int threads, int steps) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  sph::Scene scene = tank(preset, 6, 8);
-  scene.boundary.box.max.x() *= 2.0;  // room to flow: the water breaks towards +x
-  sph::Simulation sim(scene, sph::SizeClass::Small);
+  sph::Simulation sim(tank(preset, 6, 8), sph::SizeClass::Small);
+  // Stir the settled water (a shear and a swirl), so that the steps move it.
+  sph::ParticleSet& p = sim.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const sph::Vec3& x = p.position[i];
+    p.velocity[i] =
+        sph::Vec3(0.3f * std::sin(40.0f * x.y()), 0.1f * std::cos(30.0f * x.x()), 0.2f * std::sin(50.0f * x.x()));
+  }
   for (int s = 0; s < steps; ++s) sim.step();
   omp_set_num_threads(previous);
   return {sim.particles().id, sim.particles().position, sim.particles().velocity};
