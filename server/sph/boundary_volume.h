@@ -3,14 +3,15 @@
 //   Phi(x) = sum over the wall's virtual particles b of V W(|x - x_b|, h),   rho_wall = rho0 Phi,
 // the boundary particles of Akinci et al. 2012 placed on the continuation of each class's rest
 // lattice into the solid (layers at half a spacing and on behind each wall, shells inside each
-// obstacle), and summed analytically rather than stored: along a wall the layers are integrated
-// (a lattice plane of spacing s sums, for a support of two spacings, to its integral), so a face
+// obstacle), and summed rather than stored: each layer (each row along an edge) is summed over
+// the lattice's own in-plane points, for a particle on a lattice column, so a face
 // is a function of the distance alone, an edge of two and a corner of three (inclusion and
 // exclusion of the three near faces). In the spirit of the volume maps of Bender et al. 2019, but
 // layered like the fluid: a particle of a resting lattice at a wall then sees exactly the density
 // and the density gradient of the interior (a continuous wall integral gives the first layer 4 %
-// too much density and 20 % too little gradient). Obstacle and box volumes are added, so where an
-// obstacle meets the floor the overlap counts twice (a thin band of extra density along the joint).
+// too much density and 20 % too little gradient; integrating only along the layers still leaves
+// 2 % of the gradient, which the pressure force multiplies by the absolute pressure). Obstacle and box volumes are
+// added, so where an obstacle meets the floor the overlap counts twice (a thin band of extra density along the joint).
 #pragma once
 
 #include <array>

@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 #include "sph/boundary_volume.h"
@@ -74,12 +72,11 @@ TEST(BoundaryVolume, RestingLatticeSitsAtRestDensityAtFacesEdgesAndCorners) {
                                                                  {0, 2, 0}}) {
       SCOPED_TRACE(::testing::Message() << "class " << c << " lattice point " << i << "," << j << "," << k);
       const LatticeProbe p = probe(scene, setup, c, i, j, k);
-      if (std::getenv("SPH_PRINT_PROBE")) {
-        std::printf("c%d (%d,%d,%d) rho %.5f grad %.5f %.5f %.5f (scale %.3f)\n", c, i, j, k, p.density,
-                    p.gradient.x() / scale, p.gradient.y() / scale, p.gradient.z() / scale, scale);
-      }
-      EXPECT_NEAR(p.density, 1.0, 0.01);
-      EXPECT_LT(p.gradient.norm(), 0.05 * scale) << p.gradient.transpose();
+      EXPECT_NEAR(p.density, 1.0, 1e-3);
+      // The pressure force carries k_i (sum_j m_j grad W_ij + rho0 grad Phi): any residual here is
+      // multiplied by the absolute pressure, which at depth is many times the weight's share of a
+      // particle. A continuous wall integral leaves 2e-2 of the scale; the lattice's own sums, float noise.
+      EXPECT_LT(p.gradient.norm(), 1e-3 * scale) << p.gradient.transpose();
     }
   }
 }

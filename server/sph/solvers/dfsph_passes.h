@@ -50,7 +50,6 @@ struct DfsphConstants {
   std::array<CubicKernel, kSizeClassCount> kernels;
   float rest_density = 0.0f;
   const BoundaryVolume* boundary = nullptr;
-  float mirror = 2.0f;
   // |g| for the constant-density solve (the wall's virtual pressure rises with depth like the
   // water's), 0 for the divergence solve (its k is no hydrostatic pressure).
   float hydrostatic_gravity = 0.0f;

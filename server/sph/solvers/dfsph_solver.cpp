@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <string>
 
 #include "sph/collision.h"
 #include "sph/simd/simd_level.h"
@@ -42,7 +40,6 @@ DfsphSolver::DfsphSolver(const Scene& scene) : setup_(makeIncompressibleSetup(sc
   constants_.kernels = setup_.kernels;
   constants_.rest_density = static_cast<float>(scene.params.rest_density);
   constants_.boundary = setup_.boundary.get();
-  if (std::getenv("SPH_MIRROR")) constants_.mirror = std::stof(std::getenv("SPH_MIRROR"));
   velocity_constants_.kernels = setup_.kernels;
   velocity_constants_.xsph = static_cast<float>(scene.params.xsph_viscosity);
 }
@@ -84,8 +81,6 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   const DfsphPassForms forms = passForms();
   const float rho0 = constants_.rest_density;
   const SimParams& params = frame.scene.params;
-  static const bool cold = std::getenv("SPH_DF_COLD") != nullptr;
-  static const float warm_factor = std::getenv("SPH_DF_WARM") ? std::stof(std::getenv("SPH_DF_WARM")) : 1.0f;
   // What the velocities alone would do: the density after the step (rho + dt D(v)), or its rate.
   arrays_.field = p.velocity.data()->data();
   arrays_.with_wall_rate = true;
@@ -99,13 +94,12 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
     target_[i] = !counted         ? 0.0f
                  : density_target ? rho0 - std::max(p.density[i] + dt * change_[i], rho0)
                                   : -std::max(change_[i], 0.0f);
-    stiffness_[i] = cold ? 0.0f : (target_[i] < 0.0f ? warm_factor * warm[i] : 0.0f);  // warm start (BK17 4.3)
+    stiffness_[i] = target_[i] < 0.0f ? warm[i] : 0.0f;  // warm start (BK17 4.3)
   }
   // The pressure acceleration a(k) changes the density after the step by dt^2 D(a) (its rate by
   // dt D(a)); Jacobi on A k = target, A's diagonal -dt^2 / inverse_diagonal (dfsph_passes.h).
   const float scale = density_target ? dt * dt : dt;
-  constants_.hydrostatic_gravity =
-      density_target && !std::getenv("SPH_NO_HYDRO") ? static_cast<float>(std::abs(params.gravity)) : 0.0f;
+  constants_.hydrostatic_gravity = density_target ? static_cast<float>(std::abs(params.gravity)) : 0.0f;
   const float tolerance =
       static_cast<float>(density_target ? params.density_tolerance : params.divergence_tolerance / dt) * rho0;
   arrays_.field = acceleration_.data()->data();

@@ -8,16 +8,21 @@
 //   dlambda_i = -C_i / (sum_k |grad_k C_i|^2 / m_k + eps)                      (MM13 eqs. 9-11)
 // and moves every particle by
 //   dx_i = 1 / (rho0 m_i) sum_j (dl_i m_j + dl_j m_i + s_ij (l_i m_j + l_j m_i) / 2) grad W_ij
-//          + 2 dl_i grad Phi_i / m_i                                            (MM13 eq. 12)
+//          + dl_i grad Phi_i / m_i                                              (MM13 eq. 12)
 // the mass-weighted form of MM13's update (equal masses give theirs), which keeps sum m dx = 0:
-// momentum is conserved pair by pair; the wall's virtual particles carry i's own dl (mirrored,
-// as dfsph_passes.h explains: one-sided, the neighbours would push a wall particle into the wall).
+// momentum is conserved pair by pair. The wall enters as Akinci et al. 2012's boundary particles
+// do in a position-based solver: in C_i and in grad_i C_i, never moved, carrying no multiplier of
+// their own (dx_i = grad_i C_i dl_i / m_i + the fluid neighbours' share). The correction is then
+// M^-1 grad C^T dl, the projection position based dynamics rests on (a symmetric system);
+// virtual particles that carry i's own dl as well ("mirrored") make it non-symmetric, and a
+// resting tank gains energy from it. On a resting lattice sum_j m_j grad W_ij / rho0 + grad Phi_i
+// vanishes at the walls too (boundary_volume.h), so the wall's share carries no absolute multiplier.
 // Beyond MM13, lambda is the step's total multiplier,
 // projected to lambda <= 0 (water pushes, never pulls: a particle below rest density keeps
 // only what compression gave it, so the free surface does not clump), and dl is the change the
-// projection allowed; pbf_solver.cpp starts each step from the last step's lambda (a warm
-// start). s_ij = -k (W_ij / W(dq h))^n is MM13's artificial pressure (eq. 13) in units of l_c,
-// the lambda of a full neighbourhood at C = 1, applied once a step.
+// projection allowed. s_ij = -k (W_ij / W(dq h))^n is MM13's artificial pressure (eq. 13) in
+// units of l_c, the lambda of a full neighbourhood at C = 1, applied once a step with the first
+// correction.
 #pragma once
 
 #include <array>
@@ -54,7 +59,6 @@ struct PbfConstants {
   int tensile_n = 4;
   std::array<float, kSizeClassCount> contact{};  // nearest a centre may come to a wall
   const BoundaryVolume* boundary = nullptr;
-  float mirror = 2.0f;
   const Boundary* obstacles = nullptr;
   BoxState box;
 };

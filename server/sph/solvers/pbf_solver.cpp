@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "sph/collision.h"
@@ -27,6 +25,10 @@ VelocityPassForms velocityForms() {
 // At most this many frames relax fresh water (incompressible_setup.h).
 constexpr int kSettleFrames = 200;
 
+// Under-relaxation of the Jacobi update of lambda: neighbours correct each other's density at the
+// same time, so the full Newton step (1) overshoots, and a resting tank oscillates.
+constexpr float kJacobiRelaxation = 0.5f;
+
 }  // namespace
 
 PbfSolver::PbfSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)) {
@@ -43,25 +45,15 @@ PbfSolver::PbfSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)
     c.contact[k] = setup_.contact[k];
   }
   c.tensile_k = static_cast<float>(p.pbf_tensile_k);
-  c.omega = std::getenv("SPH_PBF_OMEGA") ? std::stof(std::getenv("SPH_PBF_OMEGA")) : 0.5f;
+  c.omega = kJacobiRelaxation;
   c.tensile_n = p.pbf_tensile_n;
   c.boundary = setup_.boundary.get();
-  if (std::getenv("SPH_MIRROR")) c.mirror = std::stof(std::getenv("SPH_MIRROR"));
   velocity_constants_.kernels = setup_.kernels;
   velocity_constants_.xsph = static_cast<float>(p.xsph_viscosity);
   velocity_constants_.vorticity_epsilon = static_cast<float>(p.vorticity_confinement);
 }
 
-void PbfSolver::settle(const FrameContext& frame) {
-  // lambda = -p m dt^2 / rho0 (pbf_solver.cpp's pressure) with the pressure of water at rest.
-  ParticleSet& p = frame.particles;
-  const double dt = frame.dt / frame.scene.params.substeps;
-  const std::vector<float> pressure = restingPressure(frame.scene, setup_, p);
-  const auto factor = static_cast<float>(dt * dt / frame.scene.params.rest_density);
-  for (std::size_t i = 0; i < p.size(); ++i) p.pbf_lambda[i] = -pressure[i] * p.mass[i] * factor;
-  const int frames = std::getenv("SPH_NO_RELAX") ? 0 : relaxAtRest(*this, frame, setup_, kSettleFrames);
-  if (std::getenv("SPH_DEBUG_SETTLE")) std::fprintf(stderr, "settle: %d frames\n", frames);
-}
+void PbfSolver::settle(const FrameContext& frame) { relaxAtRest(*this, frame, setup_, kSettleFrames); }
 
 void PbfSolver::advance(const FrameContext& frame) {
   const int steps = frame.scene.params.substeps;
@@ -114,26 +106,22 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   a.lambda = lambda_.data();
   a.lambda_step = lambda_step_.data();
 
-  // Solve the density constraints (lines 8-19): first the last step's multipliers (the warm
-  // start) with the artificial pressure, then lambda and the corrections, a few times.
+  // Solve the density constraints (lines 8-19) from lambda = 0 (MM13), the artificial pressure
+  // with the first correction. No warm start from the last step's multipliers: the constraint's
+  // Jacobi system, like any symmetric SPH pressure stencil, has a near null space (a pressure
+  // alternating layer by layer exerts no force inside the fluid) that the iterations neither see
+  // nor damp, and carried from step to step it is felt where the walls and the surface break the
+  // symmetry; a warm-started resting tank did not come to rest, it gained speed until it boiled.
+  // From zero each step the multipliers are a function of the current compression alone, like a
+  // stiff equation of state.
   t = std::chrono::steady_clock::now();
-  const auto correct = [&](bool tensile) {
-    a.position = p.position.data()->data();
-    a.position_next = next_position_.data()->data();
-    forms.correct(a, constants_, frame.grid, tensile);
-    p.position.swap(next_position_);
-  };
-  const bool warm = !std::getenv("SPH_PBF_COLD");
   std::fill_n(lambda_.begin(), n, 0.0f);
-  std::copy_n(p.pbf_lambda.begin(), n, lambda_step_.begin());
-  if (warm) {
-    std::copy_n(p.pbf_lambda.begin(), n, lambda_.begin());
-    correct(constants_.tensile_k > 0.0f);
-  }
   for (int iteration = 0; iteration < frame.scene.params.pbf_iterations; ++iteration) {
     a.position = p.position.data()->data();
     forms.lambda(a, constants_, frame.grid);
-    correct(false);
+    a.position_next = next_position_.data()->data();
+    forms.correct(a, constants_, frame.grid, iteration == 0 && constants_.tensile_k > 0.0f);
+    p.position.swap(next_position_);
   }
   std::copy_n(lambda_.begin(), n, p.pbf_lambda.begin());
   frame.stats.iterations += frame.scene.params.pbf_iterations;
@@ -168,13 +156,14 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   p.velocity.swap(next_velocity_);
 
   // The attributes the rest of the step and the frames read: density (of the last constraint
-  // pass), volume, and the pressure whose impulse the corrections were: lambda = -m dt^2 p / rho0
-  // (the correction as a pressure force over dt^2, pbf_passes.h).
+  // pass), volume, and the pressure whose impulse the corrections were: dx_i = dt^2 a_i with
+  // a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij matches pbf_passes.h's dx term by
+  // term for lambda_i = -dt^2 m_i rho0 p_i / rho_i^2.
   const float rho0 = static_cast<float>(frame.scene.params.rest_density);
   double error = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : error)
   for (std::size_t i = 0; i < n; ++i) {
-    p.pressure[i] = -rho0 * lambda_[i] / (p.mass[i] * dt * dt);
+    p.pressure[i] = -lambda_[i] * p.density[i] * p.density[i] / (rho0 * p.mass[i] * dt * dt);
     p.volume[i] = p.mass[i] / p.density[i];
     p.pressure_term[i] = p.pressure[i] / (p.density[i] * p.density[i]);
     error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);

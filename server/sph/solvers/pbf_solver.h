@@ -3,11 +3,11 @@
 // density constraint (pbf_passes.h), takes the velocity from the displacement, smooths it (XSPH)
 // and restores vorticity (vorticity confinement). SimParams::substeps steps a frame.
 //
-// A few Jacobi iterations carry a correction only a few neighbours far, so a deep column cannot
-// build the pressure that carries it within one step. Each step therefore starts from the last
-// step's multipliers (pbf_lambda, an attribute; pbf_passes.h), applied before the iterations, as
-// dfsph starts from the last pressure: the iterations correct what changed. Fresh water starts
-// with the multipliers of water at rest (settle), so the first steps add no kick.
+// Each step solves from zero multipliers (pbf_solver.cpp says why not from the last step's), so
+// a few Jacobi iterations hold a deep column as a stiff equation of state would: the compression
+// grows with the depth and with dt^2 and falls with the iterations, so the preset takes four steps
+// a frame of three iterations each (params.cpp). The step's multipliers are kept (pbf_lambda) for the pressure the
+// frames show. Fresh water is relaxed at rest first (settle: incompressible_setup.h).
 #pragma once
 
 #include <vector>

@@ -1,0 +1,161 @@
+// A closed tank of water at rest (scenes/validation/hydrostatic.json in small, built here): the
+// incompressible presets must hold it at rest density, with walls and floor at rest density too,
+// the hydrostatic pressure, and no motion once settled. And they give the same particles, bit for
+// bit, on one thread and on two.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sph/simulation.h"
+
+namespace {
+
+// A tank nx x nx lattice spacings wide, water ny layers deep filling its floor wall to wall (so
+// the resting lattice is the one the walls' volume continues, boundary_volume.h).
+sph::Scene tank(const std::string& preset, int nx, int ny) {
+  sph::Scene scene;
+  scene.name = "hydrostatic";
+  scene.source = "hydrostatic_test";
+  EXPECT_TRUE(sph::presetByName(preset, scene.params));
+  const double s = std::cbrt(scene.params.mass_small / scene.params.rest_density);
+  const double width = nx * s;
+  scene.boundary.box.min = Eigen::Vector3d::Zero();
+  scene.boundary.box.max = Eigen::Vector3d(width, (ny + 4) * s, width);
+  scene.water.min = Eigen::Vector3d::Zero();
+  scene.water.max = Eigen::Vector3d(width, ny * s + 1e-6, width);
+  scene.large_particles = nx * nx * ny / 2;  // the regular method's SMALL particles: nx^2 ny
+  return scene;
+}
+
+struct Rest {
+  double mean_density_error = 0.0;        // mean |rho / rho0 - 1| below the surface layers
+  double wall_min = 1.0, wall_max = 1.0;  // rho / rho0 of the particles at walls and floor
+  double rms_speed = 0.0;
+  double slope_ratio = 0.0;  // -dp/dy / (rho0 g), interior particles
+};
+
+Rest measure(const sph::Simulation& sim) {
+  const sph::ParticleSet& p = sim.particles();
+  const sph::SimParams& params = sim.params();
+  const double rho0 = params.rest_density;
+  const double s = std::cbrt(params.mass_small / rho0);
+  const sph::BoxState box = sim.boxNow();
+  float top = -1e9f;
+  for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].y());
+  Rest out;
+  out.wall_min = 1e9;
+  out.wall_max = -1e9;
+  double v2 = 0.0, error = 0.0;
+  int below = 0;
+  // Least squares p = a + b y over the interior: farther than a support from walls, floor and surface.
+  double sy = 0.0, sp = 0.0, syy = 0.0, syp = 0.0;
+  int interior = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const sph::Vec3& x = p.position[i];
+    v2 += p.velocity[i].squaredNorm();
+    const double side = std::min({x.x() - box.min.x(), box.max.x() - x.x(), x.z() - box.min.z(), box.max.z() - x.z()});
+    const double floor = x.y() - box.min.y();
+    const double depth = top - x.y();
+    const double rho = p.density[i] / rho0;
+    if (depth < 1.5 * s) continue;  // the free surface's layer is under-dense by nature
+    error += std::abs(rho - 1.0);
+    ++below;
+    if (std::min(side, floor) < 0.75 * s) {
+      out.wall_min = std::min(out.wall_min, rho);
+      out.wall_max = std::max(out.wall_max, rho);
+    }
+    if (side > 2.5 * s && floor > 2.5 * s && depth > 2.5 * s) {
+      ++interior;
+      sy += x.y();
+      sp += p.pressure[i];
+      syy += static_cast<double>(x.y()) * x.y();
+      syp += static_cast<double>(x.y()) * p.pressure[i];
+    }
+  }
+  out.rms_speed = std::sqrt(v2 / static_cast<double>(p.size()));
+  out.mean_density_error = error / std::max(below, 1);
+  const double slope = (syp - sy * sp / interior) / (syy - sy * sy / interior);
+  out.slope_ratio = -slope / (rho0 * std::abs(params.gravity));
+  EXPECT_GT(interior, 20);
+  return out;
+}
+
+// 10 x 10 spacings, 14 layers deep (1,400 particles, 0.3 m of water), settled for 3 s.
+// One thread: the result is the same on any count (below), and a small set on two threads of a
+// busy machine spends its time waiting at the barriers.
+void expectRest(const std::string& preset) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(1);
+  sph::Simulation sim(tank(preset, 10, 14), sph::SizeClass::Small);
+  ASSERT_EQ(sim.particles().size(), 1400u);
+  for (int f = 0; f < 300; ++f) sim.step();
+  omp_set_num_threads(previous);
+  const Rest r = measure(sim);
+  std::printf("%s: mean |rho/rho0 - 1| %.5f, walls and floor [%.4f, %.4f] rho0, rms %.5f m/s, slope %.4f rho0 g\n",
+              preset.c_str(), r.mean_density_error, r.wall_min, r.wall_max, r.rms_speed, r.slope_ratio);
+  SCOPED_TRACE(::testing::Message() << preset << ": mean |rho/rho0 - 1| " << r.mean_density_error << ", walls ["
+                                    << r.wall_min << ", " << r.wall_max << "], rms " << r.rms_speed << " m/s, slope "
+                                    << r.slope_ratio << " rho0 g");
+  EXPECT_LE(r.mean_density_error, 0.01);
+  EXPECT_GE(r.wall_min, 0.98);
+  EXPECT_LE(r.wall_max, 1.02);
+  EXPECT_LT(r.rms_speed, 5e-3);
+  EXPECT_NEAR(r.slope_ratio, 1.0, 0.05);
+}
+
+TEST(Hydrostatic, PbfHoldsTheTankAtRest) { expectRest("pbf"); }
+
+// Open defect: dfsph does not yet come to rest here (the rms speed grows to tenths of a m/s within
+// a few seconds, with the pressure alternating layer by layer); enable when it does. Run it with
+// --gtest_also_run_disabled_tests.
+TEST(Hydrostatic, DISABLED_DfsphHoldsTheTankAtRest) { expectRest("dfsph"); }
+
+struct State {
+  std::vector<std::uint32_t> id;
+  std::vector<sph::Vec3> position, velocity;
+};
+
+State runWithThreads(const std::string& preset, int threads, int steps) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  sph::Simulation sim(tank(preset, 6, 8), sph::SizeClass::Small);
+  // Stir the settled water (a shear and a swirl), so that the steps move it.
+  sph::ParticleSet& p = sim.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const sph::Vec3& x = p.position[i];
+    p.velocity[i] =
+        sph::Vec3(0.3f * std::sin(40.0f * x.y()), 0.1f * std::cos(30.0f * x.x()), 0.2f * std::sin(50.0f * x.x()));
+  }
+  for (int s = 0; s < steps; ++s) sim.step();
+  omp_set_num_threads(previous);
+  return {sim.particles().id, sim.particles().position, sim.particles().velocity};
+}
+
+void expectThreadIndependent(const std::string& preset) {
+  const State one = runWithThreads(preset, 1, 30);
+  const State two = runWithThreads(preset, 2, 30);
+  ASSERT_EQ(one.id, two.id);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < one.position.size(); ++i) {
+    if (std::memcmp(one.position[i].data(), two.position[i].data(), sizeof(float) * 3) != 0 ||
+        std::memcmp(one.velocity[i].data(), two.velocity[i].data(), sizeof(float) * 3) != 0) {
+      ++differing;
+    }
+  }
+  EXPECT_EQ(differing, 0u) << preset;
+  // The water moved (the run tested something).
+  double moved = 0.0;
+  for (const sph::Vec3& v : one.velocity) moved = std::max(moved, static_cast<double>(v.norm()));
+  EXPECT_GT(moved, 0.05) << preset;
+}
+
+TEST(Hydrostatic, PbfIndependentOfThreadCount) { expectThreadIndependent("pbf"); }
+TEST(Hydrostatic, DfsphIndependentOfThreadCount) { expectThreadIndependent("dfsph"); }
+
+}  // namespace
