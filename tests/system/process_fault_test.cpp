@@ -25,6 +25,7 @@ std::string scratch(const std::string& name) {
 std::vector<std::string> serverArgs() {
   std::vector<std::string> args = sph_test::tinyPoolServerArgs(SPH_SERVER_BINARY, SPH_NET_TEST_SCENE_DIR);
   args.insert(args.end(), {"--status-interval", "0"});
+  args.insert(args.end(), sph_test::kCheapPreset.begin(), sph_test::kCheapPreset.end());
   return args;
 }
 

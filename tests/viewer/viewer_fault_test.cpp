@@ -26,6 +26,7 @@ using Clock = std::chrono::steady_clock;
 std::vector<std::string> serverArgs() {
   std::vector<std::string> args = sph_test::tinyPoolServerArgs(SPH_SERVER_PATH, SPH_NET_TEST_SCENE_DIR);
   args.insert(args.end(), {"--status-interval", "0"});
+  args.insert(args.end(), sph_test::kCheapPreset.begin(), sph_test::kCheapPreset.end());
   return args;
 }
 

@@ -48,7 +48,9 @@ class ServerProcess {
                                   "--threads",
                                   "1",
                                   "--status-interval",
-                                  "0"};
+                                  "0",
+                                  "--preset",  // sph_test::kCheapPreset (tests/support/server_args.h)
+                                  "thesis"};
     if (!scene_dir.empty()) {
       args.push_back("--scene-dir");
       args.push_back(scene_dir);
