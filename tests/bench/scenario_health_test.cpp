@@ -1,6 +1,7 @@
 // Scenario tier: 900 frames of every shipped scene with every method keep every particle in the
 // box, produce no NaN and keep the mass exactly (by class, every frame): with each scene's own
-// preset (the thesis's) and with the server's default, pbf.
+// preset (the thesis's), and for 300 frames (3 s: the collapse, the splash and the first slosh)
+// with the server's default, pbf, whose step costs several times the thesis's.
 #include <gtest/gtest.h>
 
 #include "bench/bench_run.h"
@@ -8,11 +9,12 @@
 
 namespace {
 
-void expectHealthyRun(const std::string& scene_name, const std::string& method, const std::string& preset) {
+void expectHealthyRun(const std::string& scene_name, const std::string& method, const std::string& preset,
+                      int frames) {
   const sph::Scene s = scene::loadScene(scene_name, scene::defaultSceneDir(), preset);
   gaze::GazeRecording recording;
   bench::RunOptions options;
-  options.frames = 900;
+  options.frames = frames;
   options.threads = 2;
   if (bench::methodNeedsGaze(method)) {
     recording = gaze::readGazeRecording(s.gaze_recording);
@@ -30,7 +32,7 @@ void expectHealthyRun(const std::string& scene_name, const std::string& method, 
     mass_mismatches += sim.particles().totalMass() != by_class;
   };
   const bench::RunResult run = bench::runScene(s, method, options);
-  ASSERT_EQ(run.records.size(), 900u);
+  ASSERT_EQ(run.records.size(), static_cast<std::size_t>(frames));
   EXPECT_EQ(worst_outside, 0u);
   EXPECT_EQ(worst_nan, 0u);
   EXPECT_EQ(mass_mismatches, 0u);
@@ -45,11 +47,11 @@ class ScenarioHealth : public ::testing::TestWithParam<SceneAndMethod> {};
 class ScenarioHealthPbf : public ::testing::TestWithParam<SceneAndMethod> {};
 
 TEST_P(ScenarioHealth, NineHundredFramesStayInTheBoxWithoutNaN) {
-  expectHealthyRun(std::get<0>(GetParam()), std::get<1>(GetParam()), "");
+  expectHealthyRun(std::get<0>(GetParam()), std::get<1>(GetParam()), "", 900);
 }
 
-TEST_P(ScenarioHealthPbf, NineHundredFramesStayInTheBoxWithoutNaN) {
-  expectHealthyRun(std::get<0>(GetParam()), std::get<1>(GetParam()), "pbf");
+TEST_P(ScenarioHealthPbf, ThreeHundredFramesStayInTheBoxWithoutNaN) {
+  expectHealthyRun(std::get<0>(GetParam()), std::get<1>(GetParam()), "pbf", 300);
 }
 
 const auto kAllScenesAllMethods =
