@@ -9,8 +9,7 @@
 
 namespace {
 
-void expectHealthyRun(const std::string& scene_name, const std::string& method, const std::string& preset,
-                      int frames) {
+void expectHealthyRun(const std::string& scene_name, const std::string& method, const std::string& preset, int frames) {
   const sph::Scene s = scene::loadScene(scene_name, scene::defaultSceneDir(), preset);
   gaze::GazeRecording recording;
   bench::RunOptions options;
