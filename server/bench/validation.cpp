@@ -93,6 +93,10 @@ RestProfile measureRestProfile(const sph::ParticleSet& p, double rest_density, c
   const int nbins = std::max(1, static_cast<int>(std::ceil(depth_max / bin_width)));
   r.bins.resize(nbins);
   double speed_sq = 0.0, error_sum = 0.0;
+  // The slope's least squares p = c + slope depth over the interior particles: farther than 2.5
+  // spacings (beyond the support) from the walls, the floor and the surface, where the walls'
+  // and the surface's own layers do not bend the profile.
+  double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   double side_sum = 0.0, floor_sum = 0.0;
   int side_n = 0, floor_n = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -106,6 +110,14 @@ RestProfile measureRestProfile(const sph::ParticleSet& p, double rest_density, c
     error_sum += std::abs(ratio - 1.0);
     speed_sq += p.velocity[i].squaredNorm();
     const double s = spacingOf(p, i, rest_density);
+    const double side = std::min({x.x() - box_min.x(), box_max.x() - x.x(), x.z() - box_min.z(), box_max.z() - x.z()});
+    if (side > 2.5 * s && x.y() - box_min.y() > 2.5 * s && depth > 2.5 * s) {
+      sw += 1.0;
+      sx += depth;
+      sy += p.pressure[i];
+      sxx += depth * depth;
+      sxy += depth * p.pressure[i];
+    }
     // The layers touching a wall, below the top two layers (the free surface is under-dense by
     // nature: it has no water above it).
     if (depth < 2.0 * s) continue;
@@ -123,20 +135,12 @@ RestProfile measureRestProfile(const sph::ParticleSet& p, double rest_density, c
   r.rms_speed = std::sqrt(speed_sq / n);
   if (side_n > 0) r.wall_density_error = std::abs(side_sum / side_n - 1.0);
   if (floor_n > 0) r.wall_density_error = std::max(r.wall_density_error, std::abs(floor_sum / floor_n - 1.0));
-  // Least squares p = c + slope * depth over the bins' means, weighted by their counts.
-  double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   for (int b = 0; b < nbins; ++b) {
     DepthBin& bin = r.bins[b];
     bin.depth = (b + 0.5) * bin_width;
     if (bin.count == 0) continue;
     bin.density_ratio /= bin.count;
     bin.pressure /= bin.count;
-    const double w = bin.count;
-    sw += w;
-    sx += w * bin.depth;
-    sy += w * bin.pressure;
-    sxx += w * bin.depth * bin.depth;
-    sxy += w * bin.depth * bin.pressure;
   }
   const double denominator = sw * sxx - sx * sx;
   if (denominator > 0.0) r.pressure_slope = (sw * sxy - sx * sy) / denominator;
