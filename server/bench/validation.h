@@ -54,7 +54,7 @@ struct RestProfile {
   std::vector<DepthBin> bins;       // top to bottom
   double mean_density_error = 0.0;  // mean |rho / rho0 - 1| over all particles
   double wall_density_error = 0.0;  // the largest |mean rho / rho0 - 1| of the wall and floor layers
-  double pressure_slope = 0.0;  // least squares dp / d(depth) over the interior, Pa/m (rho0 g)
+  double pressure_slope = 0.0;      // least squares dp / d(depth) over the interior, Pa/m (rho0 g)
   double rms_speed = 0.0;           // m/s
 };
 // `box_min`/`box_max`: the tank; wall and floor layers are the particles within one spacing of a wall.
