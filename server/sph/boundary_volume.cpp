@@ -138,52 +138,32 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     sphere_radius_.push_back(static_cast<float>(sp.radius));
     sphere_centres_.push_back(sp.centre.cast<float>());
   }
-  // Cylinder: a shell of radius q adds s q integral over theta of L(|D - q e^{i theta}|).
+  // Cylinder: a shell of radius q adds s q integral over theta of row(|D - q e^{i theta}|), with
+  // row = L for Phi and row = L2 (z^2 g along the axis) for the moment M_y of a vertical shell.
+  const auto shellSum = [](const Table& row, double radius, double s, double h, double d) {
+    constexpr int kAngles = 256;
+    double sum = 0.0;
+    for (double q = radius - 0.5 * s; q > 0.0 && d - q < h; q -= s) {
+      double ring = 0.0;
+      for (int a = 0; a < kAngles; ++a) {
+        const double theta = (a + 0.5) * 2.0 * std::numbers::pi / kAngles;
+        const double rho = std::sqrt(std::max(d * d + q * q - 2.0 * d * q * std::cos(theta), 0.0));
+        float l = 0.0f, unused = 0.0f;
+        row.at(static_cast<float>(rho), l, unused);
+        ring += l * 2.0 * std::numbers::pi / kAngles;
+      }
+      sum += s * q * ring;
+    }
+    return sum;
+  };
   for (const Cylinder& cy : boundary.cylinders) {
-    std::array<Table, kSizeClassCount> tables;
+    std::array<Table, kSizeClassCount> tables, moments;
     for (std::size_t c = 0; c < kSizeClassCount; ++c) {
-      const CubicKernel& k = kernels[c];
-      const double s = spacing[c];
-      tables[c] = tabulate(cy.radius, k.h, [&](double d) {
-        constexpr int kAngles = 256;
-        double phi = 0.0;
-        for (double q = cy.radius - 0.5 * s; q > 0.0 && d - q < k.h; q -= s) {
-          double ring = 0.0;
-          for (int a = 0; a < kAngles; ++a) {
-            const double theta = (a + 0.5) * 2.0 * std::numbers::pi / kAngles;
-            const double rho = std::sqrt(std::max(d * d + q * q - 2.0 * d * q * std::cos(theta), 0.0));
-            float l = 0.0f, unused = 0.0f;
-            line_[c].at(static_cast<float>(rho), l, unused);
-            ring += l * 2.0 * std::numbers::pi / kAngles;
-          }
-          phi += s * q * ring;
-        }
-        return phi;
-      });
+      const double h = kernels[c].h, s = spacing[c];
+      tables[c] = tabulate(cy.radius, h, [&](double d) { return shellSum(line_[c], cy.radius, s, h, d); });
+      moments[c] = tabulate(cy.radius, h, [&](double d) { return shellSum(row_moment_along_[c], cy.radius, s, h, d); });
     }
     cylinders_.push_back(std::move(tables));
-    // M_y of a vertical shell: as Phi, with L2 (z^2 g along the axis) for L.
-    std::array<Table, kSizeClassCount> moments;
-    for (std::size_t c = 0; c < kSizeClassCount; ++c) {
-      const CubicKernel& k = kernels[c];
-      const double s = spacing[c];
-      moments[c] = tabulate(cy.radius, k.h, [&](double d) {
-        constexpr int kAngles = 256;
-        double m = 0.0;
-        for (double q = cy.radius - 0.5 * s; q > 0.0 && d - q < k.h; q -= s) {
-          double ring = 0.0;
-          for (int a = 0; a < kAngles; ++a) {
-            const double theta = (a + 0.5) * 2.0 * std::numbers::pi / kAngles;
-            const double rho = std::sqrt(std::max(d * d + q * q - 2.0 * d * q * std::cos(theta), 0.0));
-            float l = 0.0f, unused = 0.0f;
-            row_moment_along_[c].at(static_cast<float>(rho), l, unused);
-            ring += l * 2.0 * std::numbers::pi / kAngles;
-          }
-          m += s * q * ring;
-        }
-        return m;
-      });
-    }
     cylinder_moments_.push_back(std::move(moments));
     cylinder_radius_.push_back(static_cast<float>(cy.radius));
     cylinder_axes_.emplace_back(static_cast<float>(cy.x), static_cast<float>(cy.z));

@@ -19,10 +19,6 @@ DfsphPassForms passForms() {
   return simdLevel() == SimdLevel::kAvx512 ? avx512::dfsphPassForms() : scalar::dfsphPassForms();
 }
 
-VelocityPassForms velocityForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
-}
-
 // The divergence solver leaves particles with fewer neighbours alone (BK17 4.2: at the surface
 // the divergence cannot be estimated from one side); a full resting neighbourhood has about 33.
 constexpr std::uint32_t kDivergenceNeighbours = 20;
@@ -178,20 +174,8 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt) {
   const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p.velocity[i] += dt * gravity;
-  VelocityArrays v;
-  v.n = n;
-  v.mass = a.mass;
-  v.support = a.support;
-  v.class_index = a.class_index;
-  v.position = a.position;
-  v.density = a.density;
-  v.velocity = p.velocity.data()->data();
-  v.velocity_next = next_velocity_.data()->data();
-  v.vorticity = vorticity_.data()->data();
-  v.normal_length = p.normal_length.data();
-  v.surface_distance = p.surface_distance.data();
-  v.surface_hop = frame.track_surface_distance ? p.surface_hop.data() : nullptr;
-  velocityForms().smooth(v, velocity_constants_, frame.grid);
+  const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, frame.track_surface_distance);
+  dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
   p.velocity.swap(next_velocity_);
   frame.timings.accel_integrate_collide_ms += msSince(t);
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sph/simd/simd_level.h"
+
 namespace sph {
 
 namespace {
@@ -52,6 +54,28 @@ std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup
   std::vector<float> pressure(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) pressure[i] = weight * std::max(top - p.position[i].y(), 0.0f);
   return pressure;
+}
+
+VelocityPassForms dispatchedVelocityPassForms() {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
+}
+
+VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next, std::vector<Vec3>& vorticity,
+                                bool track_surface_distance) {
+  VelocityArrays v;
+  v.n = p.size();
+  v.mass = p.mass.data();
+  v.support = p.support.data();
+  v.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  v.position = p.position.data()->data();
+  v.density = p.density.data();
+  v.velocity = p.velocity.data()->data();
+  v.velocity_next = velocity_next.data()->data();
+  v.vorticity = vorticity.data()->data();
+  v.normal_length = p.normal_length.data();
+  v.surface_distance = p.surface_distance.data();
+  v.surface_hop = track_surface_distance ? p.surface_hop.data() : nullptr;
+  return v;
 }
 
 int relaxAtRest(FluidSolver& solver, const FrameContext& frame, const IncompressibleSetup& setup, int max_frames) {

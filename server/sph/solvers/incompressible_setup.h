@@ -12,6 +12,7 @@
 #include "sph/particles.h"
 #include "sph/scene.h"
 #include "sph/solvers/fluid_solver.h"
+#include "sph/solvers/velocity_passes.h"
 
 namespace sph {
 
@@ -39,6 +40,14 @@ std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup
 // water that never comes to rest, `max_frames`). The result is the packing and the pressure in
 // which the solver itself holds the water at rest. Returns the frames taken.
 int relaxAtRest(FluidSolver& solver, const FrameContext& frame, const IncompressibleSetup& setup, int max_frames);
+
+// The velocity passes' form this CPU runs (simd_level.h).
+VelocityPassForms dispatchedVelocityPassForms();
+
+// The velocity passes' view of `p` as it is now, with the solver's scratch for the smoothed
+// velocities and the vorticity (sized to p.size()); the surface-distance hop only when tracked.
+VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next, std::vector<Vec3>& vorticity,
+                                bool track_surface_distance);
 
 // A frame's scratch array sized to n without shrinking (no allocation once at the ceiling).
 template <typename T>

@@ -18,10 +18,6 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 PbfPassForms passForms() { return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms(); }
 
-VelocityPassForms velocityForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
-}
-
 // At most this many frames relax fresh water (incompressible_setup.h).
 constexpr int kSettleFrames = 200;
 
@@ -137,20 +133,8 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
     moved = std::max(moved, step.norm());
     p.velocity[i] = step * inv_dt;
   }
-  VelocityArrays v;
-  v.n = n;
-  v.mass = a.mass;
-  v.support = a.support;
-  v.class_index = a.class_index;
-  v.position = p.position.data()->data();
-  v.density = p.density.data();
-  v.velocity = p.velocity.data()->data();
-  v.velocity_next = next_velocity_.data()->data();
-  v.vorticity = vorticity_.data()->data();
-  v.normal_length = p.normal_length.data();
-  v.surface_distance = p.surface_distance.data();
-  v.surface_hop = frame.track_surface_distance ? p.surface_hop.data() : nullptr;
-  const VelocityPassForms velocity = velocityForms();
+  const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, frame.track_surface_distance);
+  const VelocityPassForms velocity = dispatchedVelocityPassForms();
   velocity.smooth(v, velocity_constants_, frame.grid);
   if (velocity_constants_.vorticity_epsilon > 0.0f) velocity.confine(v, velocity_constants_, frame.grid);
   p.velocity.swap(next_velocity_);
