@@ -109,16 +109,7 @@ void writeSurgeFront(const std::vector<FrontRun>& runs, const fs::path& dir) {
     std::snprintf(cell, sizeof cell, "| %.2f | %.2f |", e.T, e.Z);
     md << cell;
     for (const FrontRun& r : runs) {
-      // The simulated Z at the experiment's T (linear between frames).
-      double z = NAN;
-      for (std::size_t k = 1; k < r.curve.size(); ++k) {
-        if (e.T <= r.curve[k].T) {
-          const double f = (e.T - r.curve[k - 1].T) / (r.curve[k].T - r.curve[k - 1].T);
-          z = r.curve[k - 1].Z + f * (r.curve[k].Z - r.curve[k - 1].Z);
-          break;
-        }
-      }
-      std::snprintf(cell, sizeof cell, " %.2f |", z);
+      std::snprintf(cell, sizeof cell, " %.2f |", bench::frontZAt(r.curve, e.T));
       md << cell;
     }
     md << '\n';

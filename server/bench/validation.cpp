@@ -21,7 +21,9 @@ double spacingOf(const sph::ParticleSet& p, std::size_t i, double rest_density) 
   return std::cbrt(p.mass[i] / rest_density);
 }
 
-double interpolateZ(const std::vector<FrontPoint>& curve, double T) {
+}  // namespace
+
+double frontZAt(const std::vector<FrontPoint>& curve, double T) {
   if (curve.empty()) return std::numeric_limits<double>::quiet_NaN();
   if (T <= curve.front().T) return curve.front().Z;
   for (std::size_t k = 1; k < curve.size(); ++k) {
@@ -32,8 +34,6 @@ double interpolateZ(const std::vector<FrontPoint>& curve, double T) {
   }
   return std::numeric_limits<double>::quiet_NaN();  // beyond the simulated time: not comparable
 }
-
-}  // namespace
 
 Column measureColumn(const sph::ParticleSet& p, double rest_density, double wall_x) {
   Column c;
@@ -59,7 +59,7 @@ double maxRelativeFrontError(const std::vector<FrontPoint>& simulated, const std
   double worst = 0.0;
   for (const FrontPoint& e : experiment) {
     if (e.T > t_max || e.T == 0.0) continue;  // at T = 0, Z = 1 by definition
-    const double z = interpolateZ(simulated, e.T - shift);
+    const double z = frontZAt(simulated, e.T - shift);
     if (!std::isfinite(z)) return std::numeric_limits<double>::infinity();
     worst = std::max(worst, std::abs(z - e.Z) / e.Z);
   }

@@ -32,6 +32,9 @@ Column measureColumn(const sph::ParticleSet& particles, double rest_density, dou
 // the leading particle's volume), so that a few spray particles ahead of the water do not count.
 double surgeFrontX(const sph::ParticleSet& particles, double rest_density);
 
+// Z of `curve` at T, linear between its points; its first Z before it, NaN beyond its end.
+double frontZAt(const std::vector<FrontPoint>& curve, double T);
+
 // The simulated curve compared with the experiment at the experiment's T <= t_max: the largest
 // relative error |Z_sim(T + shift) - Z_exp| / Z_exp over those points, with the simulated curve
 // interpolated linearly. `shift` delays the experiment (its gate took time to clear).
