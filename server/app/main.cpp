@@ -59,7 +59,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
   sim.preset = "pbf";
   cli.add_option("--preset", sim.preset,
-                 "fluid: pbf (incompressible, position based), dfsph (incompressible, divergence-free), "
+                 "fluid: pbf (incompressible, position based), dfsph (divergence-free, experimental: docs/fluids.md), "
                  "thesis (the thesis's compressible SPH, k = 3), or scene (the scene file's own preset)")
       ->check(CLI::IsMember({"pbf", "dfsph", "thesis", "scene"}))
       ->capture_default_str();
