@@ -23,6 +23,7 @@ enum class SplitRule : std::uint8_t {
   kReset,    // the attribute's reset value
   kFreshId,  // the first child keeps the parent's value, the second its own fresh one (the id)
   kClass,    // the SMALL class's value (ParticleSet::setClass: size class, radius, support)
+  kMark,     // 1 for both: the adaptive step placed them (the `placed` flag)
 };
 
 // Two SMALL particles merge into one LARGE (eqs. (3.40)-(3.43)); the survivor's attribute is:
@@ -34,6 +35,7 @@ enum class MergeRule : std::uint8_t {
   kMax,      // the larger
   kReset,    // the attribute's reset value
   kClass,    // the LARGE class's value (ParticleSet::setClass)
+  kMark,     // 1: the adaptive step placed it (the `placed` flag)
 };
 
 struct ParticleAttributes;
@@ -77,6 +79,11 @@ struct ParticleAttributes {
   // pbf: the density constraint's multiplier lambda of the last step (<= 0; pbf_passes.h), the
   // next step's warm start.
   std::vector<float> pbf_lambda;
+  // 1 for a particle the adaptive step placed (a split's children, a merged particle). Where a
+  // split or a merge puts a particle is a choice of the method, not a motion of the water: pbf
+  // lets the density constraint move a placed particle without making it faster, until the
+  // constraint holds it (pbf_solver.cpp); after other solvers' frames Simulation::step clears it.
+  std::vector<std::uint8_t> placed;
 };
 
 namespace detail {
@@ -115,7 +122,9 @@ inline const auto kParticleAttributes = std::make_tuple(
     AttributeSpec<float>{&ParticleAttributes::kappa_divergence, "kappa_divergence", 0.0f, SplitRule::kCopy,
                          MergeRule::kAverage},
     // lambda = -p m dt^2 / rho0 grows with the mass: halved for the children, summed when merged.
-    AttributeSpec<float>{&ParticleAttributes::pbf_lambda, "pbf_lambda", 0.0f, SplitRule::kHalve, MergeRule::kSum});
+    AttributeSpec<float>{&ParticleAttributes::pbf_lambda, "pbf_lambda", 0.0f, SplitRule::kHalve, MergeRule::kSum},
+    AttributeSpec<std::uint8_t>{&ParticleAttributes::placed, "placed", std::uint8_t{0}, SplitRule::kMark,
+                                MergeRule::kMark});
 
 // Every vector is the same size, whatever its element type: a member of ParticleAttributes that is
 // missing from the table (or listed twice) changes one side of this and stops the build.

@@ -33,6 +33,9 @@ T mergedValue(MergeRule rule, const T& a, const T& b, const T& reset) {
     case MergeRule::kMax:
       if constexpr (std::is_arithmetic_v<T>) return std::max(a, b);
       break;
+    case MergeRule::kMark:
+      if constexpr (std::is_arithmetic_v<T>) return T(1);
+      break;
   }
   throw std::logic_error("merge rule does not apply to this attribute's type");
 }
@@ -89,6 +92,13 @@ void ParticleSet::splitInto(std::size_t parent, std::size_t child, const SizeCla
         v[parent] = spec.reset_value;
         v[child] = spec.reset_value;
         break;
+      case SplitRule::kMark:
+        if constexpr (std::is_arithmetic_v<T>) {
+          v[parent] = T(1);
+          v[child] = T(1);
+          break;
+        }
+        throw std::logic_error(std::string("split rule kMark does not apply to ") + spec.name);
       case SplitRule::kFreshId:  // the child keeps the id appendReset gave it
       case SplitRule::kClass:    // setClass below
         break;

@@ -67,6 +67,10 @@ void Simulation::step() {
   }
   solver_->advance(
       {scene_, particles_, grid_, time_, scene_.params.time_step, track_surface_distance_, timings_, solver_stats_});
+  // pbf keeps a placed particle's flag until its density constraint holds (pbf_solver.cpp); the
+  // other solvers do not read it.
+  if (scene_.params.solver != Solver::kPbf)
+    std::fill(particles_.placed.begin(), particles_.placed.end(), std::uint8_t{0});
 
   ++steps_;
   time_ = static_cast<double>(steps_) * scene_.params.time_step;  // no drift from repeated sums

@@ -209,6 +209,13 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
         EXPECT_EQ(v[0], spec.reset_value);
         EXPECT_EQ(v[c], spec.reset_value);
         break;
+      case sph::SplitRule::kMark:
+        if constexpr (std::is_arithmetic_v<std::decay_t<decltype(v[0])>>) {
+          EXPECT_EQ(parent[0], 0);  // a fresh set: nothing placed yet
+          EXPECT_EQ(v[0], 1);
+          EXPECT_EQ(v[c], 1);
+        }
+        break;
       case sph::SplitRule::kFreshId:
         EXPECT_EQ(v[0], parent[0]);
         EXPECT_NE(v[c], parent[0]);
@@ -263,6 +270,11 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
         break;
       case sph::MergeRule::kReset:
         EXPECT_EQ(v[0], spec.reset_value);
+        break;
+      case sph::MergeRule::kMark:
+        if constexpr (std::is_arithmetic_v<T>) {
+          EXPECT_EQ(v[0], 1);
+        }
         break;
       case sph::MergeRule::kClass:
         break;

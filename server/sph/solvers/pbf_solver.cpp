@@ -25,6 +25,10 @@ constexpr int kSettleFrames = 200;
 // same time, so the full Newton step (1) overshoots, and a resting tank oscillates.
 constexpr float kJacobiRelaxation = 0.5f;
 
+// A placed particle counts as in place once its density is within this of rest density (about
+// twice what a deep tank keeps at rest).
+constexpr float kPlacedDensity = 1.01f;
+
 }  // namespace
 
 PbfSolver::PbfSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)) {
@@ -57,6 +61,13 @@ void PbfSolver::advance(const FrameContext& frame) {
   frame.stats = SolverStats{};
   frame.stats.substeps = steps;
   for (int s = 0; s < steps; ++s) substep(frame, frame.time + s * dt, static_cast<float>(dt));
+  // A placed particle stays placed, frame after frame, until the constraint holds it near rest
+  // density: the rest of its correction is placement too.
+  ParticleSet& p = frame.particles;
+  const auto in_place = static_cast<float>(kPlacedDensity * frame.scene.params.rest_density);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.density[i] <= in_place) p.placed[i] = 0;
+  }
 }
 
 float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
@@ -123,7 +134,11 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   frame.stats.iterations += frame.scene.params.pbf_iterations;
   frame.timings.density_pressure_ms += msSince(t);
 
-  // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22).
+  // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22). A particle
+  // the adaptive step placed (particle_attributes.h, `placed`) may be slowed or turned by its
+  // correction but never made faster than its predicted velocity: the constraint moving a split's
+  // children apart is placement, not motion, and made velocity it kicks a resting pool
+  // (SplitMerge.SplittingARestingPbfPoolDoesNotKickIt).
   t = std::chrono::steady_clock::now();
   const float inv_dt = 1.0f / dt;
   float moved = 0.0f;
@@ -131,7 +146,13 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 step = p.position[i] - old_position_[i];
     moved = std::max(moved, step.norm());
-    p.velocity[i] = step * inv_dt;
+    Vec3 velocity = step * inv_dt;
+    if (p.placed[i] != 0) {
+      const float predicted = p.velocity[i].norm();
+      const float speed = velocity.norm();
+      if (speed > predicted) velocity *= predicted / speed;
+    }
+    p.velocity[i] = velocity;
   }
   const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, frame.track_surface_distance);
   const VelocityPassForms velocity = dispatchedVelocityPassForms();
