@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # Screenshots of the five scenes with the gaze method: docs/screenshots/<scene>_fluid.png in fluid
 # mode (the default render), and docs/screenshots/dambreak_particles.png, the dam break in particles
-# mode (SMALL blue, LARGE red) from the same server. (The <scene>_gaze.png pictures beside them are
-# the particles-mode pictures of the script before fluid mode; it no longer makes them.) Starts sph_server per scene on free loopback
-# ports (with --neighbor-counts, so spray shows as droplets), and has sph_viewer (headless, a hidden
+# mode (SMALL blue, LARGE red) from the same server, with the server's default preset (pbf). Starts
+# sph_server per scene on free loopback ports (with --neighbor-counts, so spray shows as droplets), and has sph_viewer (headless, a hidden
 # window under Xvfb) send a fixed gaze point and take the picture at the first frame it draws at or
 # after a chosen sim time (the server runs in real time). The fluid pictures use --fluid-scale 1
 # (full resolution; the default on software GL is half).
@@ -28,7 +27,8 @@ for scene in dambreak dambreak_obstacles large_box small_box wave; do
     --gaze-endpoint 'tcp://127.0.0.1:*' --pose-endpoint 'tcp://127.0.0.1:*' \
     --control-endpoint 'tcp://127.0.0.1:*' --status-interval 0 >"$log" 2>&1 &
   server=$!
-  for _ in $(seq 100); do grep -q "endpoint control" "$log" && break; sleep 0.1; done
+  # pbf settles the water before the server binds: up to a few tens of seconds on 2 cores.
+  for _ in $(seq 900); do grep -q "endpoint control" "$log" && break; sleep 0.1; done
   endpoint() { grep -o "endpoint $1 tcp://[0-9.:]*" "$log" | awk '{print $3}'; }
   shoot() {  # $1 output, then viewer options
     local out=$1
