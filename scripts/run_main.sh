@@ -56,7 +56,7 @@ bash scripts/install_deps.sh
 bin=build/bin
 if [ ! -x "$bin/sph_server" ] || [ ! -x "$bin/gaze_bridge" ] || [ ! -x "$bin/sph_viewer" ]; then
   # Measured on a fresh clone: docs/performance.md, "First build".
-  echo "run_main: first build of sph_server, gaze_bridge and sph_viewer: about 7 minutes on 2 cores (later runs rebuild only what changed)"
+  echo "run_main: first build of sph_server, gaze_bridge and sph_viewer: 3 to 8 minutes on 2 cores (later runs rebuild only what changed)"
 fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)" --target sph_server gaze_bridge sph_viewer
