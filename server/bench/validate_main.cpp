@@ -149,10 +149,10 @@ void plot(const std::vector<FrontRun>& runs, const std::vector<std::string>& pre
   std::ostringstream gp;
   gp << "set datafile separator ','\nset terminal pngcairo size 1100,700\n"
      << "set output '" << (dir / "surge_front.png").string() << "'\n"
-     << "set title 'Surge front, Martin & Moyce n^2 = 2'\nset xlabel 'T = t sqrt(2g/a)'\n"
+     << "set title 'Surge front, Martin \\& Moyce n^2 = 2'\nset xlabel 'T = t sqrt(2g/a)'\n"
      << "set ylabel 'Z = x / a'\nset key left top\nset xrange [0:3.5]\n"
      << "plot '" << (dir / "martin_moyce_n2.csv").string()
-     << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin & Moyce 1952'";
+     << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin \\& Moyce 1952'";
   for (const FrontRun& r : runs) {
     gp << ", '" << (dir / "surge_front.csv").string() << "' using ((strcol(1) eq '" << r.preset << "' && strcol(2) eq '"
        << r.method << "') ? $3 : NaN):4 with lines lw 2 title '" << r.preset << " " << r.method << "'";
