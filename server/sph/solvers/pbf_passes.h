@@ -46,6 +46,10 @@ struct PbfArrays {
   float* density = nullptr;      // rho_i of the last lambda pass
   float* lambda = nullptr;       // the step's total multiplier, <= 0
   float* lambda_step = nullptr;  // the change of lambda the correction pass applies
+  // When set, a pass visits only these particles (in this order) and leaves the others' entries
+  // as they are: the local iterations around freshly placed particles (pbf_solver.cpp).
+  const std::uint32_t* only = nullptr;
+  std::size_t only_count = 0;
 };
 
 struct PbfConstants {

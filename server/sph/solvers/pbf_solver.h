@@ -28,6 +28,8 @@ class PbfSolver : public FluidSolver {
  private:
   // Returns the largest distance a particle moved.
   float substep(const FrameContext& frame, double t0, float dt);
+  // The local iterations around freshly placed particles (pbf_solver.cpp); returns how many.
+  int placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPassForms& forms);
 
   IncompressibleSetup setup_;
   PbfConstants constants_;
@@ -35,6 +37,9 @@ class PbfSolver : public FluidSolver {
   // Scratch, sized to the particles once at the ceiling (no allocation in a step after that).
   std::vector<Vec3> old_position_, next_position_, next_velocity_, vorticity_;
   std::vector<float> lambda_, lambda_step_;
+  std::vector<float> density_at_start_;  // the frame's, for the placed particles' extra iterations
+  std::vector<std::uint32_t> placed_, updated_, moved_;
+  std::vector<std::uint8_t> mark_;
 };
 
 }  // namespace sph
