@@ -46,6 +46,9 @@ struct PbfArrays {
   float* density = nullptr;      // rho_i of the last lambda pass
   float* lambda = nullptr;       // the step's total multiplier, <= 0
   float* lambda_step = nullptr;  // the change of lambda the correction pass applies
+  // grad Phi_i at `position`, written by the lambda pass for the correction pass that follows it
+  // at the same positions, so that the walls' volume is sampled once per iteration (packed)
+  float* wall_grad = nullptr;
   // When set, a pass visits only these particles (in this order) and leaves the others' entries
   // as they are: the local iterations around freshly placed particles (pbf_solver.cpp).
   const std::uint32_t* only = nullptr;
@@ -68,7 +71,7 @@ struct PbfConstants {
 };
 
 // The pass functions of one form (the velocity passes are velocity_passes.h):
-//   lambda   density and dlambda of every particle at `position`; lambda += dlambda projected to
+//   lambda   density, grad Phi and dlambda of every particle at `position`; lambda += dlambda projected to
 //            <= 0, lambda_step = the change made
 //   correct  position_next = position + dx from lambda_step (with the artificial pressure when
 //            `tensile`), kept inside the box and out of the obstacles

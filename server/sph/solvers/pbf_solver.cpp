@@ -173,7 +173,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
   const std::size_t room = p.capacity();
-  for (auto* v : {&old_position_, &next_position_, &next_velocity_, &vorticity_}) {
+  for (auto* v : {&old_position_, &next_position_, &next_velocity_, &vorticity_, &wall_grad_}) {
     v->reserve(room);
     v->resize(n);
   }
@@ -214,6 +214,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   a.density = p.density.data();
   a.lambda = lambda_.data();
   a.lambda_step = lambda_step_.data();
+  a.wall_grad = wall_grad_.data()->data();
 
   // Solve the density constraints (lines 8-19) from lambda = 0 (MM13), the artificial pressure
   // with the first correction. No warm start from the last step's multipliers: the constraint's

@@ -35,7 +35,7 @@ class PbfSolver : public FluidSolver {
   PbfConstants constants_;
   VelocityConstants velocity_constants_;
   // Scratch, sized to the particles once at the ceiling (no allocation in a step after that).
-  std::vector<Vec3> old_position_, next_position_, next_velocity_, vorticity_;
+  std::vector<Vec3> old_position_, next_position_, next_velocity_, vorticity_, wall_grad_;
   std::vector<float> lambda_, lambda_step_;
   std::vector<float> density_at_start_;  // the frame's, for the placed particles' extra iterations
   std::vector<std::uint32_t> placed_, updated_, moved_;
