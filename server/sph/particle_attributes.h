@@ -80,10 +80,11 @@ struct ParticleAttributes {
   // next step's warm start.
   std::vector<float> pbf_lambda;
   // Non-zero for a particle the adaptive step placed (a split's children, a merged particle): 1 as
-  // placed, 2 once pbf has run a frame on it. Where a split or a merge puts a particle is a choice
-  // of the method, not a motion of the water: pbf lets the density constraint move a placed
-  // particle without making it faster, until the constraint holds it, and iterates longer in the
-  // frame after a placement (pbf_solver.cpp); after other solvers' frames Simulation::step clears it.
+  // placed, 2 once pbf has run a frame on it; pbf marks a fresh one's neighbours 3 for that frame.
+  // Where a split or a merge puts a particle is a choice of the method, not a motion of the water:
+  // pbf lets the density constraint move a placed particle without making it faster, until the
+  // constraint holds it, and iterates longer in the frame after a placement (pbf_solver.cpp);
+  // after other solvers' frames Simulation::step clears it.
   std::vector<std::uint8_t> placed;
 };
 
