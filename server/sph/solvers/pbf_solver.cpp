@@ -61,25 +61,19 @@ void markNearPlacements(const NeighborGrid& grid, ParticleSet& p) {
 constexpr float kPlacedCompression = 0.03f;
 constexpr int kPlacedIterations = 21;
 
-// The fresh placements compressed beyond the limit, as the last constraint pass computed it:
-// rho_i - max(rho_i at the frame's start, rho0) > limit (a child starts with its parent's density).
-void overCompressedPlacements(const ParticleSet& p, const std::vector<float>& at_start, float rest_density, float limit,
-                              std::vector<std::uint32_t>& out) {
-  out.clear();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.placed[i] == kPlacedThisFrame && p.density[i] - std::max(at_start[i], rest_density) > limit) {
-      out.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
+// The compression particle i's placement added, as the last constraint pass computed its density:
+// rho_i - max(rho_i at the frame's start, rho0) (a child starts with its parent's density).
+float placementExcess(const ParticleSet& p, const std::vector<float>& at_start, float rest_density, std::size_t i) {
+  return p.density[i] - std::max(at_start[i], rest_density);
 }
 
-// Appends to `out` the neighbours of `seeds` that `mark` does not have yet, marking them `tag`.
-void addNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::uint8_t tag,
-                       std::vector<std::uint8_t>& mark, std::vector<std::uint32_t>& out) {
+// Appends to `out` the neighbours of `seeds` that `mark` does not have yet, and marks them.
+void addNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::vector<std::uint8_t>& mark,
+                       std::vector<std::uint32_t>& out) {
   for (std::uint32_t i : seeds) {
     for (std::uint32_t j : grid.neighbors(i)) {
       if (mark[j] == 0) {
-        mark[j] = tag;
+        mark[j] = 1;
         out.push_back(j);
       }
     }
@@ -133,18 +127,25 @@ void PbfSolver::advance(const FrameContext& frame) {
 int PbfSolver::placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPassForms& forms) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
-  const float limit = kPlacedCompression * constants_.rest_density;
-  overCompressedPlacements(p, density_at_start_, constants_.rest_density, limit, placed_);
+  const float rho0 = constants_.rest_density;
+  const float limit = kPlacedCompression * rho0;
+  // The fresh placements compressed beyond the limit.
+  placed_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.placed[i] == kPlacedThisFrame && placementExcess(p, density_at_start_, rho0, i) > limit) {
+      placed_.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
   if (placed_.empty()) return 0;
   // Updated: the placements and their neighbours; moved: those and theirs. Every other particle
   // has a zero change of multiplier, so its correction would be zero.
   mark_.assign(n, 0);
   updated_.assign(placed_.begin(), placed_.end());
   for (std::uint32_t i : placed_) mark_[i] = 1;
-  addNeighbourhoods(frame.grid, placed_, 1, mark_, updated_);
+  addNeighbourhoods(frame.grid, placed_, mark_, updated_);
   std::sort(updated_.begin(), updated_.end());
   moved_.assign(updated_.begin(), updated_.end());
-  addNeighbourhoods(frame.grid, updated_, 2, mark_, moved_);
+  addNeighbourhoods(frame.grid, updated_, mark_, moved_);
   std::sort(moved_.begin(), moved_.end());
   std::fill_n(lambda_step_.begin(), n, 0.0f);
   int iteration = 0;
@@ -160,9 +161,7 @@ int PbfSolver::placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPa
     for (std::uint32_t i : moved_) p.position[i] = next_position_[i];
     ++iteration;
     // Done once no placement is still over the limit (the lambda pass measured them all).
-    std::erase_if(placed_, [&](std::uint32_t i) {
-      return p.density[i] - std::max(density_at_start_[i], constants_.rest_density) <= limit;
-    });
+    std::erase_if(placed_, [&](std::uint32_t i) { return placementExcess(p, density_at_start_, rho0, i) <= limit; });
   }
   a.only = nullptr;
   a.only_count = 0;
