@@ -14,7 +14,8 @@ namespace sph {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'S', 'P', 'H', 'C', 'K', 'P', 'T'};
-constexpr std::uint32_t kFormatVersion = 1;
+// 2: without the attribute pbf_lambda (written, never read).
+constexpr std::uint32_t kFormatVersion = 2;
 // A name in the header longer than this is corruption, not a scene.
 constexpr std::uint32_t kMaxNameBytes = 4096;
 

@@ -76,9 +76,6 @@ struct ParticleAttributes {
   // the next step's warm start (Bender & Koschier 2017, 4.3).
   std::vector<float> kappa;
   std::vector<float> kappa_divergence;
-  // pbf: the density constraint's multiplier lambda of the last step (<= 0; pbf_passes.h), the
-  // next step's warm start.
-  std::vector<float> pbf_lambda;
   // Non-zero for a particle the adaptive step placed (a split's children, a merged particle): 1 as
   // placed, 2 once pbf has run a frame on it; pbf marks a fresh one's neighbours 3 for that frame.
   // Where a split or a merge puts a particle is a choice of the method, not a motion of the water:
@@ -123,8 +120,6 @@ inline const auto kParticleAttributes = std::make_tuple(
     AttributeSpec<float>{&ParticleAttributes::kappa, "kappa", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
     AttributeSpec<float>{&ParticleAttributes::kappa_divergence, "kappa_divergence", 0.0f, SplitRule::kCopy,
                          MergeRule::kAverage},
-    // lambda = -p m dt^2 / rho0 grows with the mass: halved for the children, summed when merged.
-    AttributeSpec<float>{&ParticleAttributes::pbf_lambda, "pbf_lambda", 0.0f, SplitRule::kHalve, MergeRule::kSum},
     AttributeSpec<std::uint8_t>{&ParticleAttributes::placed, "placed", std::uint8_t{0}, SplitRule::kMark,
                                 MergeRule::kMark});
 

@@ -235,7 +235,6 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
   }
   frame.stats.iterations += iterations;
   frame.stats.iterations += placeLocally(frame, a, forms);
-  std::copy_n(lambda_.begin(), n, p.pbf_lambda.begin());
   frame.timings.density_pressure_ms += msSince(t);
 
   // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22). A particle

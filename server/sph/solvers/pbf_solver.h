@@ -6,7 +6,7 @@
 // Each step solves from zero multipliers (pbf_solver.cpp says why not from the last step's), so
 // a few Jacobi iterations hold a deep column as a stiff equation of state would: the compression
 // grows with the depth and with dt^2 and falls with the iterations, so the preset takes four steps
-// a frame of three iterations each (params.cpp). The step's multipliers are kept (pbf_lambda) for the pressure the
+// a frame of three iterations each (params.cpp). The last step's multipliers give the pressure the
 // frames show. Fresh water is relaxed at rest first (settle: incompressible_setup.h).
 #pragma once
 
