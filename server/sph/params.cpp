@@ -128,6 +128,11 @@ SimParams pbfPreset() {
   // would be a stiff attraction, s_corr l_c is the same displacement whatever dt, that keeps a
   // tank jittering at several cm/s.
   p.pbf_tensile_k = 0.0;
+  // No vorticity confinement (MM13 eq. 16) either: it puts back rotation that a coarse solver
+  // damps, but at this resolution the Martin & Moyce front and the resting tank are the same
+  // with it and without (docs/fluids.md), and its pass was an eighth of every step. A scene that
+  // wants it sets `vorticity_confinement`.
+  p.vorticity_confinement = 0.0;
   return p;
 }
 

@@ -63,13 +63,13 @@ struct SimParams {
   double pbf_tensile_k = 0.1;    // pbf: artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13)
   double pbf_tensile_dq = 0.2;
   int pbf_tensile_n = 4;
-  double xsph_viscosity = 0.01;         // c of XSPH velocity smoothing (MM13 eq. 17), both solvers
-  double vorticity_confinement = 1e-5;  // pbf: epsilon of vorticity confinement (MM13 eq. 16), per unit mass
-  double cfl = 0.4;                     // dfsph: solver step <= cfl * particle diameter / max speed
-  int max_substeps = 40;                // dfsph: at most this many solver steps per frame
-  double density_tolerance = 5e-4;      // dfsph: mean |rho / rho0 - 1| the constant-density solver stops at
-  double divergence_tolerance = 1e-3;   // dfsph: mean |d rho / dt| / rho0 * dt the divergence solver stops at
-  int max_iterations = 100;             // dfsph: per solver, per step
+  double xsph_viscosity = 0.01;        // c of XSPH velocity smoothing (MM13 eq. 17), both solvers
+  double vorticity_confinement = 0.0;  // pbf: epsilon of vorticity confinement (MM13 eq. 16), m/s; 0: off
+  double cfl = 0.4;                    // dfsph: solver step <= cfl * particle diameter / max speed
+  int max_substeps = 40;               // dfsph: at most this many solver steps per frame
+  double density_tolerance = 5e-4;     // dfsph: mean |rho / rho0 - 1| the constant-density solver stops at
+  double divergence_tolerance = 1e-3;  // dfsph: mean |d rho / dt| / rho0 * dt the divergence solver stops at
+  int max_iterations = 100;            // dfsph: per solver, per step
 
   std::array<SizeClassProps, kSizeClassCount> classes() const;
   double surfaceThreshold() const;  // l, eq. (3.36)
