@@ -65,7 +65,7 @@ void DfsphSolver::advance(const FrameContext& frame) {
     const int left = std::max(params.max_substeps - frame.stats.substeps, 1);
     const int steps = std::clamp(static_cast<int>(std::ceil(remaining / bound - 1e-9)), 1, left);
     const double dt = remaining / steps;
-    substep(frame, frame.time + done, static_cast<float>(dt));
+    substep(frame, frame.time + done, static_cast<float>(dt), steps == 1);
     done += dt;
     ++frame.stats.substeps;
   }
@@ -127,7 +127,7 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   return iteration;
 }
 
-void DfsphSolver::substep(const FrameContext& frame, double t0, float dt) {
+void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool last) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
   const std::size_t room = p.capacity();
@@ -174,7 +174,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt) {
   const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p.velocity[i] += dt * gravity;
-  const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, frame.track_surface_distance);
+  const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, false, last, frame.track_surface_distance);
   dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
   p.velocity.swap(next_velocity_);
   frame.timings.accel_integrate_collide_ms += msSince(t);

@@ -24,7 +24,8 @@ class DfsphSolver : public FluidSolver {
   void settle(const FrameContext& frame) override;
 
  private:
-  void substep(const FrameContext& frame, double t0, float dt);
+  // `last`: the frame's last step.
+  void substep(const FrameContext& frame, double t0, float dt, bool last);
   // One of the two solvers: the k >= 0 that makes the density after the step rho0
   // (density_target) or its rate 0, from `warm` (the last step's k, which receives this step's),
   // then the velocities it gives. Returns the iterations taken.

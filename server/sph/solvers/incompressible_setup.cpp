@@ -61,7 +61,7 @@ VelocityPassForms dispatchedVelocityPassForms() {
 }
 
 VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next, std::vector<Vec3>& vorticity,
-                                bool track_surface_distance) {
+                                bool confinement, bool last_step, bool track_surface_distance) {
   VelocityArrays v;
   v.n = p.size();
   v.mass = p.mass.data();
@@ -71,10 +71,10 @@ VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next
   v.density = p.density.data();
   v.velocity = p.velocity.data()->data();
   v.velocity_next = velocity_next.data()->data();
-  v.vorticity = vorticity.data()->data();
-  v.normal_length = p.normal_length.data();
+  v.vorticity = confinement ? vorticity.data()->data() : nullptr;
+  v.normal_length = last_step ? p.normal_length.data() : nullptr;
   v.surface_distance = p.surface_distance.data();
-  v.surface_hop = track_surface_distance ? p.surface_hop.data() : nullptr;
+  v.surface_hop = last_step && track_surface_distance ? p.surface_hop.data() : nullptr;
   return v;
 }
 

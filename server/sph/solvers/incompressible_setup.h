@@ -45,9 +45,11 @@ int relaxAtRest(FluidSolver& solver, const FrameContext& frame, const Incompress
 VelocityPassForms dispatchedVelocityPassForms();
 
 // The velocity passes' view of `p` as it is now, with the solver's scratch for the smoothed
-// velocities and the vorticity (sized to p.size()); the surface-distance hop only when tracked.
+// velocities and the vorticity (sized to p.size()). The vorticity only with `confinement`; |n| and
+// the surface-distance hop only in the frame's last step (`last_step`: what the adaptive step
+// reads after the frame), the hop only when tracked.
 VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next, std::vector<Vec3>& vorticity,
-                                bool track_surface_distance);
+                                bool confinement, bool last_step, bool track_surface_distance);
 
 // A frame's scratch array sized to n without shrinking (no allocation once at the ceiling).
 template <typename T>

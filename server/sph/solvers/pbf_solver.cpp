@@ -114,7 +114,7 @@ void PbfSolver::advance(const FrameContext& frame) {
   ParticleSet& p = frame.particles;
   density_at_start_.reserve(p.capacity());
   density_at_start_.assign(p.density.begin(), p.density.end());
-  for (int s = 0; s < steps; ++s) substep(frame, frame.time + s * dt, static_cast<float>(dt));
+  for (int s = 0; s < steps; ++s) substep(frame, frame.time + s * dt, static_cast<float>(dt), s == steps - 1);
   // A placed particle stays placed, frame after frame, until the constraint holds it near rest
   // density: the rest of its correction is placement too.
   const auto in_place = static_cast<float>(kPlacedDensity * frame.scene.params.rest_density);
@@ -168,7 +168,7 @@ int PbfSolver::placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPa
   return iteration;
 }
 
-float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
+float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool last) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
   const std::size_t room = p.capacity();
@@ -257,10 +257,12 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt) {
     }
     p.velocity[i] = velocity;
   }
-  const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, frame.track_surface_distance);
+  const bool confinement = velocity_constants_.vorticity_epsilon > 0.0f;
+  const VelocityArrays v =
+      velocityArraysOf(p, next_velocity_, vorticity_, confinement, last, frame.track_surface_distance);
   const VelocityPassForms velocity = dispatchedVelocityPassForms();
   velocity.smooth(v, velocity_constants_, frame.grid);
-  if (velocity_constants_.vorticity_epsilon > 0.0f) velocity.confine(v, velocity_constants_, frame.grid);
+  if (confinement) velocity.confine(v, velocity_constants_, frame.grid);
   p.velocity.swap(next_velocity_);
 
   // The attributes the rest of the step and the frames read: density (of the last constraint

@@ -26,8 +26,8 @@ class PbfSolver : public FluidSolver {
   void settle(const FrameContext& frame) override;
 
  private:
-  // Returns the largest distance a particle moved.
-  float substep(const FrameContext& frame, double t0, float dt);
+  // Returns the largest distance a particle moved. `last`: the frame's last step.
+  float substep(const FrameContext& frame, double t0, float dt, bool last);
   // The local iterations around freshly placed particles (pbf_solver.cpp); returns how many.
   int placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPassForms& forms);
 

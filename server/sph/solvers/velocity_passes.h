@@ -4,7 +4,8 @@
 //             v_i + c sum_j V_j (v_j - v_i) W_ij into velocity_next; the vorticity
 //             omega_i = sum_j V_j (v_i - v_j) x grad W_ij (MM13 eq. 15, the SPH curl); |n| of the
 //             colour field n_i = sum_j V_j grad W_ij and the surface-distance hop, for the
-//             adaptive step's surface criterion (3.44), (3.45)
+//             adaptive step's surface criterion (3.44), (3.45); each of these three only where
+//             its array is given (VelocityArrays: null skips it, at no cost)
 //   confine   vorticity confinement (MM13 eq. 16): velocity_next += dt eps (N x omega_i),
 //             N = eta / |eta|, eta = grad |omega| = sum_j V_j (|omega_j| - |omega_i|) grad W_ij
 // V_j = m_j / rho_j.
@@ -28,10 +29,10 @@ struct VelocityArrays {
   const float* density = nullptr;
   const float* velocity = nullptr;
   float* velocity_next = nullptr;
-  float* vorticity = nullptr;
-  float* normal_length = nullptr;
+  float* vorticity = nullptr;      // null: not computed (no confinement follows)
+  float* normal_length = nullptr;  // null: |n| not computed (only the frame's last step's is read)
   const float* surface_distance = nullptr;
-  float* surface_hop = nullptr;  // null: the surface distance is not tracked
+  float* surface_hop = nullptr;  // null: not computed (not tracked, or not the frame's last step)
 };
 
 struct VelocityConstants {
