@@ -89,13 +89,20 @@ void writeSurgeFront(const std::vector<FrontRun>& runs, const fs::path& dir) {
   md << "# Surge front against Martin & Moyce (1952), n^2 = 2\n\n"
      << "Z = x_front / a against T = t sqrt(2 g / a); x_front is the 99.9th percentile of the particles' x plus "
         "half a spacing. Error: the largest |Z - Z_exp| / Z_exp at the experiment's points with 0 < T <= 3; "
-        "'shifted': with the start-up shift in T (<= 0.2, the experiment's gate) that minimises it.\n\n"
-     << "| preset | method | a (m) | height / a | max error | shift | max error shifted |\n"
-     << "|---|---|---|---|---|---|---|\n";
+        "'shifted': with the start-up shift in T (<= 0.2, the experiment's gate) that minimises it. "
+        "The column as released: its height (n^2 = 2 asks for 2 a), its mean compression and largest "
+        "density.\n\n"
+     << "| preset | method | a (m) | height / a | compression, mean | max rho / rho0 | max error | shift | max "
+        "error shifted |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
   for (const FrontRun& r : runs) {
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f | %s | %.2f | %s |\n", r.preset.c_str(), r.method.c_str(),
-                  r.column.width, r.column.height / r.column.width, percent(r.error).c_str(), r.shift,
+    char row[320];
+    char max_density[32] = "n/a";
+    if (std::isfinite(r.column.max_density))
+      std::snprintf(max_density, sizeof max_density, "%.3f", r.column.max_density);
+    std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f | %s | %s | %s | %.2f | %s |\n", r.preset.c_str(),
+                  r.method.c_str(), r.column.width, r.column.height / r.column.width,
+                  percent(r.column.mean_compression).c_str(), max_density, percent(r.error).c_str(), r.shift,
                   percent(r.shifted_error).c_str());
     md << row;
   }
@@ -212,8 +219,11 @@ int main(int argc, char** argv) {
       for (const std::string& method : o.methods) {
         fronts.push_back(runSurgeFront(dam, method, &gaze, o.threads));
         const FrontRun& r = fronts.back();
-        std::fprintf(stderr, "[martin_moyce %s/%s] max front error (T <= 3) %s, with a shift of %.2f: %s\n",
-                     preset.c_str(), method.c_str(), percent(r.error).c_str(), r.shift,
+        std::fprintf(stderr,
+                     "[martin_moyce %s/%s] released at %.3f a high, %s mean compression; max front error (T <= 3) "
+                     "%s, with a shift of %.2f: %s\n",
+                     preset.c_str(), method.c_str(), r.column.height / r.column.width,
+                     percent(r.column.mean_compression).c_str(), percent(r.error).c_str(), r.shift,
                      percent(r.shifted_error).c_str());
       }
       const sph::Scene tank = scene::loadScene("hydrostatic", o.scene_dir, preset);

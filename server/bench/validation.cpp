@@ -37,10 +37,19 @@ double frontZAt(const std::vector<FrontPoint>& curve, double T) {
 
 Column measureColumn(const sph::ParticleSet& p, double rest_density, double wall_x) {
   Column c;
+  double compression = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double half = 0.5 * spacingOf(p, i, rest_density);  // to the edge of the particle's volume
     c.width = std::max(c.width, p.position[i].x() + half - wall_x);
     c.height = std::max(c.height, p.position[i].y() + half);
+    const double ratio = p.density[i] / rest_density;
+    compression += std::max(ratio - 1.0, 0.0);
+    c.max_density = std::max(c.max_density, ratio);
+  }
+  if (!p.empty()) c.mean_compression = compression / static_cast<double>(p.size());
+  if (!(c.max_density > 0.0)) {  // no density yet (the thesis's solver computes it in its first step)
+    c.mean_compression = std::numeric_limits<double>::quiet_NaN();
+    c.max_density = std::numeric_limits<double>::quiet_NaN();
   }
   return c;
 }

@@ -21,10 +21,14 @@ struct FrontPoint {
 const std::vector<FrontPoint>& martinMoyceN2();
 
 // The initial column as the particles fill it: the width a (from the wall at x = wall_x to the
-// edge of the particles' volumes, m / rho0 each) and the height above y = 0.
+// edge of the particles' volumes, m / rho0 each), the height above y = 0, and how compressed the
+// water is when released (a deep column held by too few solver iterations stands short and
+// pushes off early: docs/performance.md).
 struct Column {
   double width = 0.0;
   double height = 0.0;
+  double mean_compression = 0.0;  // mean of max(rho / rho0 - 1, 0); NaN while no density is computed
+  double max_density = 0.0;       // largest rho / rho0; NaN likewise
 };
 Column measureColumn(const sph::ParticleSet& particles, double rest_density, double wall_x);
 
