@@ -1,5 +1,6 @@
 // What a misbehaving client can no longer do (issue 17): stop the frames with a tiny publish_hz,
 // grow the log with refused requests, grow memory with subscriptions, or use up the descriptors.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -168,14 +169,22 @@ TEST(ServerLimits, RunningOutOfDescriptorsIsLogged) {
   rlimit low = saved;
   low.rlim_cur = static_cast<rlim_t>(openDescriptors() + 20);
   ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &low), 0);
-  // This process's connections and the server's accepted ends share the limit: connect until no
-  // descriptor is left, so the server's next accept fails.
-  std::vector<int> fds;
-  for (int fd; fds.size() < 200 && (fd = net_test::idleTcpConnection(server->endpoints().control)) >= 0;)
-    fds.push_back(fd);
+  // This process and the server share the limit. Take every descriptor it leaves (ballast that no
+  // one else closes), then give one back for a connection: the connection is made in the kernel,
+  // and the server's accept of it finds no descriptor. (Connecting until none was left raced the
+  // server: when its accept took the last descriptor, nothing was left pending to fail, and the
+  // test failed once in CI.)
+  std::vector<int> ballast;
+  for (int fd; ballast.size() < 200 && (fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC)) >= 0;) ballast.push_back(fd);
+  ASSERT_FALSE(ballast.empty());
+  ::close(ballast.back());
+  ballast.pop_back();
+  const int connection = net_test::idleTcpConnection(server->endpoints().control);
   const bool logged = waitUntil([&] { return server->netCounters().accept_failures.load() > 0; });
-  for (int fd : fds) ::close(fd);
+  if (connection >= 0) ::close(connection);
+  for (int fd : ballast) ::close(fd);
   ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &saved), 0);
+  EXPECT_GE(connection, 0) << "the descriptor given back was taken before the connection";
   EXPECT_TRUE(logged) << "no accept failure seen";
   EXPECT_GE(log.lines("could not be accepted on the control socket: Too many open files"), 1) << log.text();
   EXPECT_LE(log.lines("could not be accepted"), 3) << "one line a second, not one a failure";
