@@ -19,7 +19,6 @@
 namespace {
 
 struct Vortex {
-  double spacing = 0.0;
   double core = 0.0;         // r_c of the Lamb-Oseen profile
   double circulation = 0.0;  // Gamma
   Eigen::Vector3d axis_point;
@@ -41,7 +40,6 @@ TEST(VorticityConfinement, PushTurnsWithTheVortexAndScalesWithEpsilon) {
   const double s = std::cbrt(small.mass / params.rest_density);
   constexpr int kAcross = 20, kHigh = 8;
   Vortex vortex;
-  vortex.spacing = s;
   vortex.core = 4.0 * s;
   vortex.circulation = 2.0 * std::numbers::pi * vortex.core * 0.5;  // about 0.3 m/s at the core's edge
   vortex.axis_point = Eigen::Vector3d(0.5 * kAcross * s, 0.0, 0.5 * kAcross * s);
