@@ -47,7 +47,7 @@ Column measureColumn(const sph::ParticleSet& p, double rest_density, double wall
     c.max_density = std::max(c.max_density, ratio);
   }
   if (!p.empty()) c.mean_compression = compression / static_cast<double>(p.size());
-  if (!(c.max_density > 0.0)) {  // no density yet (the thesis's solver computes it in its first step)
+  if (!(c.max_density > 0.0)) {  // no density yet (the thesis's solver and dfsph compute it in their first step)
     c.mean_compression = std::numeric_limits<double>::quiet_NaN();
     c.max_density = std::numeric_limits<double>::quiet_NaN();
   }

@@ -13,9 +13,6 @@ constexpr int kSamples = 512;
 // The cubic spline with support h, in units of 1 / m^3.
 double kernel(const CubicKernel& k, double r) { return k.sigma * cubicShape(static_cast<float>(r * k.inv_h)); }
 
-// W'(r) / r of the cubic spline (its gradient factor, kernels.h), 1 / m^5.
-double gradFactor(const CubicKernel& k, double r) { return cubicGradFactor(k, static_cast<float>(r)); }
-
 // The wall's virtual particles continue the fluid's rest lattice, so each layer (and each row along
 // an edge) is summed over that lattice's own points, for a particle on a lattice column: the sums
 // below are the in-plane (in-row) lattice sums, in the units of the integrals they stand for (a
@@ -36,7 +33,7 @@ double latticeSum(const CubicKernel& k, double spacing, double normal2, int dims
     for (int b = dims == 2 ? -reach : 0; b <= (dims == 2 ? reach : 0); ++b) {
       const double t2 = spacing * spacing * static_cast<double>(a * a + b * b);
       if (normal2 + t2 >= static_cast<double>(k.h) * k.h) continue;
-      sum += term(t2, static_cast<double>(a) * spacing);
+      sum += term(t2);
     }
   }
   return sum;
@@ -44,27 +41,12 @@ double latticeSum(const CubicKernel& k, double spacing, double normal2, int dims
 
 // A(u): a layer at distance u, s^2 sum_t W(sqrt(u^2 + t^2)) (1 / m; the integral of W over the plane).
 double planeSum(const CubicKernel& k, double s, double u) {
-  return s * s * latticeSum(k, s, u * u, 2, [&](double t2, double) { return kernel(k, std::sqrt(u * u + t2)); });
+  return s * s * latticeSum(k, s, u * u, 2, [&](double t2) { return kernel(k, std::sqrt(u * u + t2)); });
 }
 
 // L(rho): a row at distance rho, s sum_z W(sqrt(rho^2 + z^2)) (1 / m^2).
 double lineSum(const CubicKernel& k, double s, double rho) {
-  return s * latticeSum(k, s, rho * rho, 1, [&](double t2, double) { return kernel(k, std::sqrt(rho * rho + t2)); });
-}
-
-// B(u): over a layer at distance u, s^2 sum_t t_y^2 g(r) with t_y one in-plane axis (by the
-// lattice's symmetry either).
-double planeMoment(const CubicKernel& k, double s, double u) {
-  return s * s * latticeSum(k, s, u * u, 2, [&](double t2, double ty) {
-           return ty * ty * gradFactor(k, std::sqrt(u * u + t2));
-         });
-}
-
-// Along a row at distance rho: L1 = s sum_z g(r), L2 = s sum_z z^2 g(r).
-double rowMoment(const CubicKernel& k, double s, double rho, bool along) {
-  return s * latticeSum(k, s, rho * rho, 1, [&](double t2, double) {
-           return (along ? t2 : 1.0) * gradFactor(k, std::sqrt(rho * rho + t2));
-         });
+  return s * latticeSum(k, s, rho * rho, 1, [&](double t2) { return kernel(k, std::sqrt(rho * rho + t2)); });
 }
 
 }  // namespace
@@ -109,9 +91,6 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     const double s = spacing[c];
     plane_[c] = tabulate(0.0, k.h, [&](double u) { return planeSum(k, s, u); });
     line_[c] = tabulate(0.0, k.h, [&](double rho) { return lineSum(k, s, rho); });
-    plane_moment_[c] = tabulate(0.0, k.h, [&](double u) { return planeMoment(k, s, u); });
-    row_moment_[c] = tabulate(0.0, k.h, [&](double rho) { return rowMoment(k, s, rho, false); });
-    row_moment_along_[c] = tabulate(0.0, k.h, [&](double rho) { return rowMoment(k, s, rho, true); });
   }
   // An obstacle of radius R holds layers of the lattice as shells of radius R - (l + 1/2) s.
   // Sphere: a shell of radius q about the centre at distance D adds s q / D (A(|D - q|) - A(D + q))
@@ -138,8 +117,7 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     sphere_radius_.push_back(static_cast<float>(sp.radius));
     sphere_centres_.push_back(sp.centre.cast<float>());
   }
-  // Cylinder: a shell of radius q adds s q integral over theta of row(|D - q e^{i theta}|), with
-  // row = L for Phi and row = L2 (z^2 g along the axis) for the moment M_y of a vertical shell.
+  // Cylinder: a shell of radius q adds s q integral over theta of L(|D - q e^{i theta}|).
   const auto shellSum = [](const Table& row, double radius, double s, double h, double d) {
     constexpr int kAngles = 256;
     double sum = 0.0;
@@ -157,14 +135,12 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     return sum;
   };
   for (const Cylinder& cy : boundary.cylinders) {
-    std::array<Table, kSizeClassCount> tables, moments;
+    std::array<Table, kSizeClassCount> tables;
     for (std::size_t c = 0; c < kSizeClassCount; ++c) {
       const double h = kernels[c].h, s = spacing[c];
       tables[c] = tabulate(cy.radius, h, [&](double d) { return shellSum(line_[c], cy.radius, s, h, d); });
-      moments[c] = tabulate(cy.radius, h, [&](double d) { return shellSum(row_moment_along_[c], cy.radius, s, h, d); });
     }
     cylinders_.push_back(std::move(tables));
-    cylinder_moments_.push_back(std::move(moments));
     cylinder_radius_.push_back(static_cast<float>(cy.radius));
     cylinder_axes_.emplace_back(static_cast<float>(cy.x), static_cast<float>(cy.z));
   }
@@ -191,20 +167,11 @@ void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int 
       plane_[cu].at(u, v, dv);
       out.phi += s * v;
       d_phi[a] += s * dv;
-      if (a == 1) {
-        // A horizontal layer: r_y = sign u on the whole plane, and the gradient's in-plane parts cancel.
-        out.hydrostatic.y() += s * u * dv;
-      } else {
-        float b = 0.0f, unused = 0.0f;
-        plane_moment_[cu].at(u, b, unused);
-        out.hydrostatic.y() += s * b;
-      }
     }
   }
   for (int a = 0; a < 3; ++a) {
     for (int b = a + 1; b < 3; ++b) {
       if (!near[a] || !near[b]) continue;
-      const int along = 3 - a - b;  // the edge's direction
       for (int l = 0; l < layers; ++l) {
         for (int m = 0; m < layers; ++m) {
           const float u = offset(a, l);
@@ -216,20 +183,6 @@ void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int 
           out.phi -= s * s * v;
           d_phi[a] -= s * s * dv * u / rho;
           d_phi[b] -= s * s * dv * w / rho;
-          // The row's M: r_y constant along it unless the edge is vertical.
-          if (along == 1) {
-            float l2 = 0.0f, unused = 0.0f;
-            row_moment_along_[cu].at(rho, l2, unused);
-            out.hydrostatic.y() -= s * s * l2;
-          } else {
-            float l1 = 0.0f, unused = 0.0f;
-            row_moment_[cu].at(rho, l1, unused);
-            const float ry = a == 1 ? sign[1] * u : sign[1] * w;  // the y axis is a or b
-            const float r_other = a == 1 ? sign[b] * w : sign[a] * u;
-            const int other = a == 1 ? b : a;
-            out.hydrostatic.y() -= s * s * ry * ry * l1;
-            out.hydrostatic[other] -= s * s * ry * r_other * l1;
-          }
         }
       }
     }
@@ -244,8 +197,6 @@ void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int 
           out.phi += s * s * s * cubicW(k, r);
           const float g = cubicGradFactor(k, r);  // dW/dr / r
           for (int a = 0; a < 3; ++a) d_phi[a] += s * s * s * g * u[a];
-          const float ry = sign[1] * u[1];
-          for (int a = 0; a < 3; ++a) out.hydrostatic[a] += s * s * s * ry * g * sign[a] * u[a];
         }
       }
     }
@@ -288,13 +239,11 @@ BoundarySample BoundaryVolume::sample(const Vec3& x, int c, const BoxState& box)
     const float dz = x.z() - cylinder_axes_[s].y();
     const float dist = std::max(std::sqrt(dx * dx + dz * dz), cylinder_radius_[s]);
     if (dist >= cylinder_radius_[s] + k.h) continue;
-    float phi = 0.0f, dphi = 0.0f, moment = 0.0f, unused = 0.0f;
+    float phi = 0.0f, dphi = 0.0f;
     cylinders_[s][cu].at(dist, phi, dphi);
-    cylinder_moments_[s][cu].at(dist, moment, unused);
     out.phi += phi;
     out.grad.x() += dphi * dx / dist;
     out.grad.z() += dphi * dz / dist;
-    out.hydrostatic.y() += moment;
   }
   return out;
 }

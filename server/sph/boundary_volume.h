@@ -26,17 +26,11 @@
 namespace sph {
 
 // Phi and its gradient at one point, and the part of d(rho_wall)/dt that the solid's own motion
-// makes: grad Phi . v_solid (only moving walls of the box move). And the hydrostatic moment
-//   M = sum_b V_b (y - y_b) grad W(x - x_b),
-// with which the solvers give the wall's virtual particles the pressure of the water at rest
-// around the particle rather than its own (p_b = p + rho0 |g| (y - y_b), Band et al. 2018's
-// extrapolation): with one pressure for all, a particle at a vertical wall, half its neighbours
-// virtual, gets half the support against gravity, sinks along the wall and turns the water over.
+// makes: grad Phi . v_solid (only moving walls of the box move).
 struct BoundarySample {
   float phi = 0.0f;
   Vec3 grad = Vec3::Zero();
   float grad_dot_wall_velocity = 0.0f;
-  Vec3 hydrostatic = Vec3::Zero();  // M; the whole space's would be (0, -1, 0)
 };
 
 class BoundaryVolume {
@@ -61,13 +55,8 @@ class BoundaryVolume {
 
   std::array<CubicKernel, kSizeClassCount> kernels_;
   std::array<float, kSizeClassCount> spacing_{};
-  std::array<Table, kSizeClassCount> plane_, line_;  // A(u): a layer's integral; L(rho): a row's
-  // The hydrostatic moment's pieces: B(u) = integral over a plane at distance u of
-  // r_t^2 W'(r) / r (r_t along the plane), and along a row at distance rho, L1 = integral of
-  // W'(r) / r and L2 = integral of z^2 W'(r) / r.
-  std::array<Table, kSizeClassCount> plane_moment_, row_moment_, row_moment_along_;
+  std::array<Table, kSizeClassCount> plane_, line_;                      // A(u): a layer's integral; L(rho): a row's
   std::vector<std::array<Table, kSizeClassCount>> spheres_, cylinders_;  // Phi(D) per obstacle
-  std::vector<std::array<Table, kSizeClassCount>> cylinder_moments_;     // M_y(D) per cylinder
   std::vector<float> sphere_radius_, cylinder_radius_;
   std::vector<Eigen::Vector3f> sphere_centres_;
   std::vector<Eigen::Vector2f> cylinder_axes_;  // x, z

@@ -57,7 +57,7 @@ struct SimParams {
 
   // The incompressible solvers. time_step stays the frame (a step of the simulation: what the
   // server publishes and the adaptive step follows); they take solver steps inside it.
-  int substeps = 2;              // pbf: solver steps per frame
+  int substeps = 2;              // pbf: solver steps per frame; dfsph: at least this many (CFL may add)
   int pbf_iterations = 3;        // pbf: Jacobi iterations of the density constraint per solver step
   double pbf_relaxation = 0.01;  // pbf: constraint force mixing, relative to a full neighbourhood's (MM13 eq. 11)
   double pbf_tensile_k = 0.1;    // pbf: artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13)

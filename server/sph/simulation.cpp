@@ -27,7 +27,8 @@ Simulation::Simulation(const Scene& scene, SizeClass start_class, std::size_t ca
     // Fresh water relaxes to rest where the scene puts it: inside a gate, the water region's faces
     // as walls (with their density, boundary_volume.h), so a dam-break column settles standing and
     // is released at t = 0 instead of collapsing while it settles. The settled packing and the
-    // multipliers or pressures the solver keeps per particle (its warm start) carry over.
+    // multipliers or pressures the solver keeps per particle (its warm start) carry over (dfsph's
+    // settle sets only its warm start, dfsph_solver.cpp).
     const Scene gated = gatedScene(scene_);
     const auto gate_solver = makeFluidSolver(gated);
     gate_solver->settle({gated, particles_, grid_, 0.0, gated.params.time_step, false, timings_, solver_stats_});

@@ -122,10 +122,7 @@ void expectRest(const std::string& preset) {
 
 TEST(Hydrostatic, PbfHoldsTheTankAtRest) { expectRest("pbf"); }
 
-// Open defect: dfsph does not yet come to rest here (the rms speed grows to tenths of a m/s within
-// a few seconds, with the pressure alternating layer by layer); enable when it does. Run it with
-// --gtest_also_run_disabled_tests.
-TEST(Hydrostatic, DISABLED_DfsphHoldsTheTankAtRest) { expectRest("dfsph"); }
+TEST(Hydrostatic, DfsphHoldsTheTankAtRest) { expectRest("dfsph"); }
 
 struct State {
   std::vector<std::uint32_t> id;

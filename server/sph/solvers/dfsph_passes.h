@@ -3,19 +3,19 @@
 // instruction set (simd_level.h), the same source for both (dfsph_passes.inc); dfsph_solver.cpp
 // runs its two solvers with them. With the walls' volume Phi (boundary_volume.h), k = p / rho^2:
 //   density       rho_i = sum_j m_j W_ij + rho0 Phi_i, and the inverse Jacobi diagonal
-//                 1 / ((G + 2 B) . (G + B) + m_i sum_j m_j |grad W_ij|^2),
-//                 G = sum_j m_j grad W_ij, B = rho0 grad Phi_i (BK17 eq. 7's factor over rho, with
-//                 the mirrored wall below; the wall does not move, so it adds to the first part only)
+//                 1 / (|G + B|^2 + m_i sum_j m_j |grad W_ij|^2),
+//                 G = sum_j m_j grad W_ij, B = rho0 grad Phi_i (BK17 eq. 7's factor over rho)
 //   change        D_i(u) = sum_j m_j (u_i - u_j) . grad W_ij + rho0 (u_i . grad Phi_i - rate_i):
 //                 the density's rate of change under the velocity field u (rate_i: the moving
 //                 wall's part, grad Phi . v_wall), or under accelerations (rate 0)
-//   acceleration  a_i = -(sum_j m_j (k_i + k_j) grad W_ij + 2 k_i rho0 grad Phi_i) - |g| M_i,
-//                 the pressure's (thesis eq. (3.13); the wall's virtual particles carry the
-//                 particle's own k, plus the hydrostatic rise with depth, Band et al. 2018's
-//                 mirrored and extrapolated pressure: with Akinci's one-sided k_i the neighbours'
-//                 pressure would push a wall particle into the wall, since its own k cancels out
-//                 of its force; without the rise it would sink along a vertical wall). The
-//                 extrapolation applies where the particle is under pressure (k_i > 0).
+//   acceleration  a_i = -(sum_j m_j (k_i + k_j) grad W_ij + k_i rho0 grad Phi_i), the pressure's
+//                 (thesis eq. (3.13)), the wall's virtual particles one-sided as Akinci et al.
+//                 2012's in SPlisHSPlasH's DFSPH: they push with the particle's own k and carry
+//                 none of their own, so the solve's system is the symmetric D(M^-1 D^T) of the
+//                 fluid and the wall. Mirrored walls (k_b = k_i, with the hydrostatic rise below
+//                 the particle after Band et al. 2018) hold a lattice at rest exactly, but the
+//                 step gains energy from them: a 48-layer column started at rest blew up from its
+//                 floor within 8 frames, while one-sided walls hold the tank (docs/fluids.md).
 #pragma once
 
 #include <array>
@@ -38,7 +38,6 @@ struct DfsphArrays {
   float* inverse_diagonal = nullptr;    // the density pass's
   float* boundary_grad = nullptr;       // grad Phi_i (packed)
   float* boundary_wall_rate = nullptr;  // grad Phi_i . v_wall
-  float* boundary_moment = nullptr;     // the hydrostatic moment M_i (packed, boundary_volume.h)
   const float* field = nullptr;         // the change pass's u (packed)
   bool with_wall_rate = true;           // subtract boundary_wall_rate (for velocities, not accelerations)
   float* change = nullptr;              // the change pass's result
@@ -50,9 +49,6 @@ struct DfsphConstants {
   std::array<CubicKernel, kSizeClassCount> kernels;
   float rest_density = 0.0f;
   const BoundaryVolume* boundary = nullptr;
-  // |g| for the constant-density solve (the wall's virtual pressure rises with depth like the
-  // water's), 0 for the divergence solve (its k is no hydrostatic pressure).
-  float hydrostatic_gravity = 0.0f;
   BoxState box;
 };
 

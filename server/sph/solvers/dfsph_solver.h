@@ -4,7 +4,8 @@
 // pressure that brings the density after the step to rho0 (the constant-density solver), and
 // moves the particles. Both solvers are relaxed Jacobi iterations for k = p / rho^2 >= 0 (water
 // pushes, never pulls) to a tolerance, warm-started from the last step's k (attributes, so it
-// follows its particle through reorders, splits and merges). Solver steps obey a CFL bound.
+// follows its particle through reorders, splits and merges). Solver steps obey a CFL bound, and
+// a frame takes at least SimParams::substeps of them.
 #pragma once
 
 #include <vector>
@@ -20,7 +21,7 @@ class DfsphSolver : public FluidSolver {
  public:
   explicit DfsphSolver(const Scene& scene);
   void advance(const FrameContext& frame) override;
-  // Fresh water starts with the pressure of water at rest, relaxed to the solver's own.
+  // Fresh water starts as sampled, with the pressure of water at rest as the warm start.
   void settle(const FrameContext& frame) override;
 
  private:
@@ -36,7 +37,7 @@ class DfsphSolver : public FluidSolver {
   VelocityConstants velocity_constants_;
   DfsphArrays arrays_;
   // Scratch, sized once at the ceiling.
-  std::vector<Vec3> boundary_grad_, boundary_moment_, next_velocity_, vorticity_, acceleration_;
+  std::vector<Vec3> boundary_grad_, next_velocity_, vorticity_, acceleration_;
   std::vector<float> inverse_diagonal_, wall_rate_, change_, target_, stiffness_;
 };
 
