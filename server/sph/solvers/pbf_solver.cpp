@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <span>
 #include <string>
 
 #include "sph/collision.h"
@@ -23,19 +22,14 @@ PbfPassForms passForms() { return simdLevel() == SimdLevel::kAvx512 ? avx512::pb
 // At most this many frames relax fresh water (incompressible_setup.h).
 constexpr int kSettleFrames = 200;
 
-// Under-relaxation of the Jacobi update of lambda: neighbours correct each other's density at the
-// same time, so the full Newton step (1) overshoots, and a resting tank oscillates.
-constexpr float kJacobiRelaxation = 0.5f;
-
 // A placed particle counts as in place once its density is within this of rest density (about
 // twice what a deep tank keeps at rest).
 constexpr float kPlacedDensity = 1.01f;
 
-// `placed` (particle_attributes.h): 1 (kMark) in the frame after the adaptive step placed the
-// particle, then kPlacedEarlier until it is in place. Its neighbours in that frame are
+// `placed` (particle_attributes.h): kPlacedThisFrame (kMark) in the frame after the adaptive step
+// placed the particle, then kPlacedEarlier until it is in place. Its neighbours in that frame are
 // kNearPlacement: what the constraint does to them then answers the placement too (the unmerged
 // neighbours of a merge took 0.43 m/s rms from a resting pool without it).
-constexpr std::uint8_t kPlacedThisFrame = 1;
 constexpr std::uint8_t kPlacedEarlier = 2;
 constexpr std::uint8_t kNearPlacement = 3;
 
@@ -61,44 +55,11 @@ void markNearPlacements(const NeighborGrid& grid, ParticleSet& p) {
 constexpr float kPlacedCompression = 0.03f;
 constexpr int kPlacedIterations = 21;
 
-// The compression particle i's placement added, as the last constraint pass computed its density:
-// rho_i - max(rho_i at the frame's start, rho0) (a child starts with its parent's density).
-float placementExcess(const ParticleSet& p, const std::vector<float>& at_start, float rest_density, std::size_t i) {
-  return p.density[i] - std::max(at_start[i], rest_density);
-}
-
-// Appends to `out` the neighbours of `seeds` that `mark` does not have yet, and marks them.
-void addNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::vector<std::uint8_t>& mark,
-                       std::vector<std::uint32_t>& out) {
-  for (std::uint32_t i : seeds) {
-    for (std::uint32_t j : grid.neighbors(i)) {
-      if (mark[j] == 0) {
-        mark[j] = 1;
-        out.push_back(j);
-      }
-    }
-  }
-}
-
 }  // namespace
 
-PbfSolver::PbfSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)) {
+PbfSolver::PbfSolver(const Scene& scene)
+    : setup_(makeIncompressibleSetup(scene)), constants_(pbfConstantsOf(scene.params, setup_)) {
   const SimParams& p = scene.params;
-  PbfConstants& c = constants_;
-  c.kernels = setup_.kernels;
-  c.rest_density = static_cast<float>(p.rest_density);
-  for (std::size_t k = 0; k < kSizeClassCount; ++k) {
-    // A full resting neighbourhood's constraint denominator (pbf_passes.h): sum_j m_j |grad W|^2 / rho0^2.
-    const double full = setup_.lattice_grad_sq[k] / (p.rest_density * p.rest_density);
-    c.relaxation[k] = static_cast<float>(p.pbf_relaxation * full);
-    c.lambda_scale[k] = static_cast<float>(-1.0 / (full * (1.0 + p.pbf_relaxation)));
-    c.tensile_reference[k] = cubicW(setup_.kernels[k], static_cast<float>(p.pbf_tensile_dq) * setup_.kernels[k].h);
-    c.contact[k] = setup_.contact[k];
-  }
-  c.tensile_k = static_cast<float>(p.pbf_tensile_k);
-  c.omega = kJacobiRelaxation;
-  c.tensile_n = p.pbf_tensile_n;
-  c.boundary = setup_.boundary.get();
   velocity_constants_.kernels = setup_.kernels;
   velocity_constants_.xsph = static_cast<float>(p.xsph_viscosity);
   velocity_constants_.vorticity_epsilon = static_cast<float>(p.vorticity_confinement);
@@ -124,50 +85,6 @@ void PbfSolver::advance(const FrameContext& frame) {
   }
 }
 
-int PbfSolver::placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPassForms& forms) {
-  ParticleSet& p = frame.particles;
-  const std::size_t n = p.size();
-  const float rho0 = constants_.rest_density;
-  const float limit = kPlacedCompression * rho0;
-  // The fresh placements compressed beyond the limit.
-  placed_.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.placed[i] == kPlacedThisFrame && placementExcess(p, density_at_start_, rho0, i) > limit) {
-      placed_.push_back(static_cast<std::uint32_t>(i));
-    }
-  }
-  if (placed_.empty()) return 0;
-  // Updated: the placements and their neighbours; moved: those and theirs. Every other particle
-  // has a zero change of multiplier, so its correction would be zero.
-  mark_.assign(n, 0);
-  updated_.assign(placed_.begin(), placed_.end());
-  for (std::uint32_t i : placed_) mark_[i] = 1;
-  addNeighbourhoods(frame.grid, placed_, mark_, updated_);
-  std::sort(updated_.begin(), updated_.end());
-  moved_.assign(updated_.begin(), updated_.end());
-  addNeighbourhoods(frame.grid, updated_, mark_, moved_);
-  std::sort(moved_.begin(), moved_.end());
-  std::fill_n(lambda_step_.begin(), n, 0.0f);
-  int iteration = 0;
-  while (iteration < kPlacedIterations && !placed_.empty()) {
-    a.position = p.position.data()->data();
-    a.only = updated_.data();
-    a.only_count = updated_.size();
-    forms.lambda(a, constants_, frame.grid);
-    a.position_next = next_position_.data()->data();
-    a.only = moved_.data();
-    a.only_count = moved_.size();
-    forms.correct(a, constants_, frame.grid, false);
-    for (std::uint32_t i : moved_) p.position[i] = next_position_[i];
-    ++iteration;
-    // Done once no placement is still over the limit (the lambda pass measured them all).
-    std::erase_if(placed_, [&](std::uint32_t i) { return placementExcess(p, density_at_start_, rho0, i) <= limit; });
-  }
-  a.only = nullptr;
-  a.only_count = 0;
-  return iteration;
-}
-
 float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool last) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
@@ -178,8 +95,6 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   }
   lambda_.resize(n);
   lambda_step_.resize(n);
-  for (auto* v : {&placed_, &updated_, &moved_}) v->reserve(room);
-  mark_.reserve(room);
   constants_.box = frame.scene.boundary.stateAt(t0 + dt);
   constants_.obstacles = &frame.scene.boundary;
   velocity_constants_.dt = dt;
@@ -234,7 +149,8 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
     p.position.swap(next_position_);
   }
   frame.stats.iterations += iterations;
-  frame.stats.iterations += placeLocally(frame, a, forms);
+  frame.stats.iterations += placement_.place(p, frame.grid, a, constants_, forms, density_at_start_, next_position_,
+                                             kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);
 
   // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22). A particle

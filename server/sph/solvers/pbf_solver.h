@@ -14,6 +14,7 @@
 
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
+#include "sph/solvers/local_placement.h"
 #include "sph/solvers/pbf_passes.h"
 #include "sph/solvers/velocity_passes.h"
 
@@ -28,8 +29,6 @@ class PbfSolver : public FluidSolver {
  private:
   // Returns the largest distance a particle moved. `last`: the frame's last step.
   float substep(const FrameContext& frame, double t0, float dt, bool last);
-  // The local iterations around freshly placed particles (pbf_solver.cpp); returns how many.
-  int placeLocally(const FrameContext& frame, PbfArrays& a, const PbfPassForms& forms);
 
   IncompressibleSetup setup_;
   PbfConstants constants_;
@@ -38,8 +37,7 @@ class PbfSolver : public FluidSolver {
   std::vector<Vec3> old_position_, next_position_, next_velocity_, vorticity_, wall_grad_;
   std::vector<float> lambda_, lambda_step_;
   std::vector<float> density_at_start_;  // the frame's, for the placed particles' extra iterations
-  std::vector<std::uint32_t> placed_, updated_, moved_;
-  std::vector<std::uint8_t> mark_;
+  LocalPlacement placement_;
 };
 
 }  // namespace sph

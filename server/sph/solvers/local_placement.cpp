@@ -1,0 +1,100 @@
+#include "sph/solvers/local_placement.h"
+
+#include <algorithm>
+
+namespace sph {
+
+namespace {
+
+// Under-relaxation of the Jacobi update of lambda: neighbours correct each other's density at the
+// same time, so the full Newton step (1) overshoots, and a resting tank oscillates.
+constexpr float kJacobiRelaxation = 0.5f;
+
+// The compression particle i's placement added, as the last constraint pass computed its density:
+// rho_i - max(rho_i at the frame's start, rho0) (a child starts with its parent's density).
+float placementExcess(const ParticleSet& p, std::span<const float> at_start, float rest_density, std::size_t i) {
+  return p.density[i] - std::max(at_start[i], rest_density);
+}
+
+// Appends to `out` the neighbours of `seeds` that `mark` does not have yet, and marks them.
+void addNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::vector<std::uint8_t>& mark,
+                       std::vector<std::uint32_t>& out) {
+  for (std::uint32_t i : seeds) {
+    for (std::uint32_t j : grid.neighbors(i)) {
+      if (mark[j] == 0) {
+        mark[j] = 1;
+        out.push_back(j);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& setup) {
+  PbfConstants c;
+  c.kernels = setup.kernels;
+  c.rest_density = static_cast<float>(params.rest_density);
+  for (std::size_t k = 0; k < kSizeClassCount; ++k) {
+    // A full resting neighbourhood's constraint denominator (pbf_passes.h): sum_j m_j |grad W|^2 / rho0^2.
+    const double full = setup.lattice_grad_sq[k] / (params.rest_density * params.rest_density);
+    c.relaxation[k] = static_cast<float>(params.pbf_relaxation * full);
+    c.lambda_scale[k] = static_cast<float>(-1.0 / (full * (1.0 + params.pbf_relaxation)));
+    c.tensile_reference[k] = cubicW(setup.kernels[k], static_cast<float>(params.pbf_tensile_dq) * setup.kernels[k].h);
+    c.contact[k] = setup.contact[k];
+  }
+  c.tensile_k = static_cast<float>(params.pbf_tensile_k);
+  c.omega = kJacobiRelaxation;
+  c.tensile_n = params.pbf_tensile_n;
+  c.boundary = setup.boundary.get();
+  return c;
+}
+
+int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, PbfArrays& a, const PbfConstants& c,
+                          const PbfPassForms& forms, std::span<const float> density_at_start,
+                          std::vector<Vec3>& next_position, float limit, int max_iterations) {
+  const std::size_t n = p.size();
+  const float rho0 = c.rest_density;
+  const std::size_t room = p.capacity();
+  for (auto* v : {&placed_, &updated_, &moved_}) v->reserve(room);
+  mark_.reserve(room);
+  // The fresh placements compressed beyond the limit.
+  placed_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.placed[i] == kPlacedThisFrame && placementExcess(p, density_at_start, rho0, i) > limit) {
+      placed_.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  if (placed_.empty()) return 0;
+  // Updated: the placements and their neighbours; moved: those and theirs. Every other particle
+  // has a zero change of multiplier, so its correction would be zero.
+  mark_.assign(n, 0);
+  updated_.assign(placed_.begin(), placed_.end());
+  for (std::uint32_t i : placed_) mark_[i] = 1;
+  addNeighbourhoods(grid, placed_, mark_, updated_);
+  std::sort(updated_.begin(), updated_.end());
+  moved_.assign(updated_.begin(), updated_.end());
+  addNeighbourhoods(grid, updated_, mark_, moved_);
+  std::sort(moved_.begin(), moved_.end());
+  std::fill_n(a.lambda_step, n, 0.0f);
+  int iteration = 0;
+  while (iteration < max_iterations && !placed_.empty()) {
+    a.position = p.position.data()->data();
+    a.only = updated_.data();
+    a.only_count = updated_.size();
+    forms.lambda(a, c, grid);
+    a.position_next = next_position.data()->data();
+    a.only = moved_.data();
+    a.only_count = moved_.size();
+    forms.correct(a, c, grid, false);
+    for (std::uint32_t i : moved_) p.position[i] = next_position[i];
+    ++iteration;
+    // Done once no placement is still over the limit (the lambda pass measured them all).
+    std::erase_if(placed_, [&](std::uint32_t i) { return placementExcess(p, density_at_start, rho0, i) <= limit; });
+  }
+  a.only = nullptr;
+  a.only_count = 0;
+  return iteration;
+}
+
+}  // namespace sph
