@@ -150,15 +150,20 @@ TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
   EXPECT_LT(std::abs(after - before) / before, 0.05) << "before " << before << " after " << after;
 }
 
-// Splitting every particle of a resting pbf pool, then merging every pair it can: where the split
-// or merge puts the particles is the method's choice, not a motion of the water, so the pool must
-// not be kicked, nor compressed by more than 5 % (pbf_solver.cpp, `placed`). Before the placement
-// rule the split step gave 0.9 m/s rms and the pool still moved at 0.24 m/s 50 frames later (a
-// LARGE pool left alone: about 0.03 m/s); before the local iterations the split compressed it
-// 12 %; before the neighbours of a merge counted as placed the merge step gave 0.33 m/s.
-TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
+// How much a split or merge step may add, to the rms speed (m/s) and to the largest density error
+// (a share of rho0), with the frames the pool rests first.
+struct PlacementBounds {
+  int settle_frames;
+  double kick;
+  float compression;
+};
+
+// Splitting every particle of a resting pool, then merging every pair it can: where the split or
+// merge puts the particles is the method's choice, not a motion of the water (local_placement.h,
+// `placed`), so the pool must not be thrown, nor compressed beyond the bounds.
+void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const PlacementBounds& bounds) {
   sph::Scene scene = poolScene(0.3, 0.3, 1500);
-  ASSERT_TRUE(sph::presetByName("pbf", scene.params));
+  ASSERT_TRUE(sph::presetByName(preset, scene.params));
   scene.boundary.box.max.y() = 0.6;
   sph::Simulation sim(scene, sph::SizeClass::Large);
   const double initial_mass = sim.particles().totalMass();
@@ -173,7 +178,7 @@ TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
       most = std::max(most, rho / static_cast<float>(sim.params().rest_density));
     return most - 1.0f;
   };
-  for (int s = 0; s < 6; ++s) sim.step();
+  for (int s = 0; s < bounds.settle_frames; ++s) sim.step();
   const double rest = rms();
   const float compression_before = maxCompression();
 
@@ -186,10 +191,8 @@ TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
   const double after_split = rms();
   std::printf("rms %.4f -> %.4f m/s in the split step; max compression %.4f -> %.4f\n", rest, after_split,
               compression_before, maxCompression());
-  EXPECT_LT(after_split, rest + 0.03);
-  // The bound: the split raises the largest density error by at most 5 % (the constraint
-  // iterates on while placed particles are compressed, pbf_solver.cpp; 12 % without that).
-  EXPECT_LE(maxCompression() - compression_before, 0.05f);
+  EXPECT_LT(after_split, rest + bounds.kick);
+  EXPECT_LE(maxCompression() - compression_before, bounds.compression);
   for (int s = 0; s < 50; ++s) sim.step();
   std::printf("rms 50 frames later %.4f m/s\n", rms());
   EXPECT_LT(rms(), 0.15);
@@ -209,12 +212,29 @@ TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
   const double after_merge = rms();
   std::printf("merged %d pairs: rms %.4f -> %.4f m/s; max compression %.4f -> %.4f\n", counts.merges, before_merge,
               after_merge, compression_before_merge, maxCompression());
-  EXPECT_LT(after_merge, before_merge + 0.03);
-  EXPECT_LE(maxCompression() - compression_before_merge, 0.05f);
+  EXPECT_LT(after_merge, before_merge + bounds.kick);
+  EXPECT_LE(maxCompression() - compression_before_merge, bounds.compression);
   for (int s = 0; s < 50; ++s) sim.step();
   std::printf("rms 50 frames later %.4f m/s\n", rms());
   EXPECT_LT(rms(), 0.15);
   adaptive_test::expectMassByClass(sim, initial_mass);
+}
+
+// pbf: the bound, the split raises the largest density error by at most 5 % (2.6 %; the
+// constraint iterates on while placed particles are compressed: 12 % without that), and no kick.
+// Before the placement rule the split step gave 0.9 m/s rms and the pool still moved at 0.24 m/s
+// 50 frames later (a LARGE pool left alone: about 0.03 m/s); before the neighbours of a merge
+// counted as placed the merge step gave 0.33 m/s.
+TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
+  expectSplittingOrMergingARestingPoolDoesNotKickIt("pbf", {6, 0.03, 0.05f});
+}
+
+// dfsph, from rest (0.016 m/s after 150 frames): without the placement the split step threw the
+// pool to 3.5 m/s rms. With it the split still sets the pool sloshing, 0.21 m/s, 6.1 % more
+// compression, and the merge adds 0.04 m/s: the children are placed without overlap, but not
+// where water at rest would hold them (docs/fluids.md). These bounds hold that, not the pbf's.
+TEST(SplitMerge, SplittingOrMergingARestingDfsphPoolDoesNotThrowIt) {
+  expectSplittingOrMergingARestingPoolDoesNotKickIt("dfsph", {150, 0.3, 0.1f});
 }
 
 // The AVX-512 search (16 neighbours at a time, each lane keeping its own best) must choose exactly

@@ -27,9 +27,18 @@ constexpr std::uint32_t kDivergenceNeighbours = 20;
 // say over its own density, since its neighbours move too.
 constexpr float kRelaxation = 0.5f;
 
+// Fresh placements are moved apart (local_placement.h) until none sits more than this share of
+// rest density above its parent's density (or rho0), in at most this many iterations. The solver
+// turns what compression is left into speed within one step: splitting every particle of a pool
+// moving at 0.15 m/s rms kicked it to 3.5 m/s without the placement, 0.31 m/s with a 1 % limit,
+// 0.18 m/s with this one (SplitMerge.SplittingOrMergingARestingDfsphPoolDoesNotKickIt).
+constexpr float kPlacedCompression = 0.003f;
+constexpr int kPlacedIterations = 100;
+
 }  // namespace
 
-DfsphSolver::DfsphSolver(const Scene& scene) : setup_(makeIncompressibleSetup(scene)) {
+DfsphSolver::DfsphSolver(const Scene& scene)
+    : setup_(makeIncompressibleSetup(scene)), placement_constants_(pbfConstantsOf(scene.params, setup_)) {
   constants_.kernels = setup_.kernels;
   constants_.rest_density = static_cast<float>(scene.params.rest_density);
   constants_.boundary = setup_.boundary.get();
@@ -52,6 +61,7 @@ void DfsphSolver::advance(const FrameContext& frame) {
   const SimParams& params = frame.scene.params;
   frame.stats = SolverStats{};
   frame.stats.substeps = 0;
+  placeFresh(frame);
   double done = 0.0;
   const float spacing = std::min(setup_.spacing[0], setup_.spacing[1]);
   while (done < frame.dt * (1.0 - 1e-9)) {
@@ -72,6 +82,53 @@ void DfsphSolver::advance(const FrameContext& frame) {
     done += dt;
     ++frame.stats.substeps;
   }
+}
+
+void DfsphSolver::placeFresh(const FrameContext& frame) {
+  ParticleSet& p = frame.particles;
+  const std::size_t n = p.size();
+  if (std::find(p.placed.begin(), p.placed.end(), kPlacedThisFrame) == p.placed.end()) return;
+  fresh_.reserve(p.capacity());
+  const auto t = std::chrono::steady_clock::now();
+  for (auto* v : {&place_lambda_, &place_lambda_step_, &density_at_start_}) {
+    v->reserve(p.capacity());
+    v->assign(n, 0.0f);
+  }
+  for (auto* v : {&place_next_position_, &place_wall_grad_}) {
+    v->reserve(p.capacity());
+    v->resize(n);
+  }
+  std::copy(p.density.begin(), p.density.end(), density_at_start_.begin());
+  placement_constants_.box = frame.scene.boundary.stateAt(frame.time);
+  placement_constants_.obstacles = &frame.scene.boundary;
+  frame.grid.build(p);
+  PbfArrays a;
+  a.n = n;
+  a.mass = p.mass.data();
+  a.support = p.support.data();
+  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  a.density = p.density.data();
+  a.lambda = place_lambda_.data();
+  a.lambda_step = place_lambda_step_.data();
+  a.wall_grad = place_wall_grad_.data()->data();
+  const PbfPassForms forms = simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms();
+  // The placements' densities where they now sit (a child carries its parent's), from a constraint
+  // pass over them alone; its multipliers are discarded, the placement starts from zero.
+  fresh_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.placed[i] == kPlacedThisFrame) fresh_.push_back(static_cast<std::uint32_t>(i));
+  }
+  a.position = p.position.data()->data();
+  a.only = fresh_.data();
+  a.only_count = fresh_.size();
+  forms.lambda(a, placement_constants_, frame.grid);
+  a.only = nullptr;
+  a.only_count = 0;
+  std::fill(place_lambda_.begin(), place_lambda_.end(), 0.0f);
+  frame.stats.iterations +=
+      placement_.place(p, frame.grid, a, placement_constants_, forms, density_at_start_, place_next_position_,
+                       kPlacedCompression * constants_.rest_density, kPlacedIterations);
+  frame.timings.density_pressure_ms += msSince(t);
 }
 
 int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt) {

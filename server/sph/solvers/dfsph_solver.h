@@ -13,6 +13,8 @@
 #include "sph/solvers/dfsph_passes.h"
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
+#include "sph/solvers/local_placement.h"
+#include "sph/solvers/pbf_passes.h"
 #include "sph/solvers/velocity_passes.h"
 
 namespace sph {
@@ -25,6 +27,8 @@ class DfsphSolver : public FluidSolver {
   void settle(const FrameContext& frame) override;
 
  private:
+  // Moves the particles the adaptive step placed after the last frame apart (local_placement.h).
+  void placeFresh(const FrameContext& frame);
   // `last`: the frame's last step.
   void substep(const FrameContext& frame, double t0, float dt, bool last);
   // One of the two solvers: the k >= 0 that makes the density after the step rho0
@@ -39,6 +43,11 @@ class DfsphSolver : public FluidSolver {
   // Scratch, sized once at the ceiling.
   std::vector<Vec3> boundary_grad_, next_velocity_, vorticity_, acceleration_;
   std::vector<float> inverse_diagonal_, wall_rate_, change_, target_, stiffness_;
+  PbfConstants placement_constants_;
+  LocalPlacement placement_;
+  std::vector<Vec3> place_next_position_, place_wall_grad_;
+  std::vector<float> place_lambda_, place_lambda_step_, density_at_start_;
+  std::vector<std::uint32_t> fresh_;
 };
 
 }  // namespace sph

@@ -28,7 +28,7 @@ struct PhaseTimings {
 // What a solver did in one frame.
 struct SolverStats {
   int substeps = 1;
-  int iterations = 0;             // pressure iterations summed over the substeps (pbf, dfsph; pbf: local ones too)
+  int iterations = 0;             // pressure iterations over the substeps (pbf, dfsph; placement ones too)
   int divergence_iterations = 0;  // dfsph
   float density_error = 0.0f;     // mean max(rho / rho0 - 1, 0) after the last solve (pbf, dfsph)
 };
