@@ -36,8 +36,7 @@ class LocalPlacement {
   // lambda, lambda_step, wall_grad set and sized to p); lambda carries on from its values,
   // lambda_step is zeroed first. `next_position` is scratch of p.size(). Returns the iterations.
   int place(ParticleSet& p, const NeighborGrid& grid, PbfArrays& a, const PbfConstants& c, const PbfPassForms& forms,
-            std::span<const float> density_at_start, std::vector<Vec3>& next_position, float limit,
-            int max_iterations);
+            std::span<const float> density_at_start, std::vector<Vec3>& next_position, float limit, int max_iterations);
 
  private:
   std::vector<std::uint32_t> placed_, updated_, moved_;
