@@ -31,7 +31,7 @@ constexpr float kRelaxation = 0.5f;
 // rest density above its parent's density (or rho0), in at most this many iterations. The solver
 // turns what compression is left into speed within one step: splitting every particle of a pool
 // moving at 0.15 m/s rms kicked it to 3.5 m/s without the placement, 0.31 m/s with a 1 % limit,
-// 0.18 m/s with this one (SplitMerge.SplittingOrMergingARestingDfsphPoolDoesNotKickIt).
+// 0.18 m/s with this one (SplitMerge.SplittingOrMergingARestingDfsphPoolDoesNotThrowIt).
 constexpr float kPlacedCompression = 0.003f;
 constexpr int kPlacedIterations = 100;
 
