@@ -262,10 +262,12 @@ struct Snapshot {
   std::vector<sph::SizeClass> size_class;
 };
 
-Snapshot runWithThreads(sph::Method method, int threads) {
+Snapshot runWithThreads(sph::Method method, int threads, const char* preset = "thesis") {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  Rig rig = makeRig(surgeScene(), method);
+  sph::Scene scene = surgeScene();
+  EXPECT_TRUE(sph::presetByName(preset, scene.params));
+  Rig rig = makeRig(scene, method);
   for (int s = 0; s < 40; ++s) {
     rig.controller->setGaze(gazeAt(0.3 + 0.005 * s, 0.55));
     rig.sim->step();
@@ -275,16 +277,23 @@ Snapshot runWithThreads(sph::Method method, int threads) {
   return {p.id, p.position, p.velocity, p.size_class};
 }
 
-TEST(AdaptiveMethods, ResultIndependentOfThreadCount) {
+void expectThreadIndependent(const char* preset) {
   for (sph::Method method : {sph::Method::Surface, sph::Method::Gaze, sph::Method::Hybrid}) {
     SCOPED_TRACE(sph::methodName(method));
-    const Snapshot one = runWithThreads(method, 1);
-    const Snapshot two = runWithThreads(method, 2);
+    const Snapshot one = runWithThreads(method, 1, preset);
+    const Snapshot two = runWithThreads(method, 2, preset);
     ASSERT_EQ(one.id, two.id);
     ASSERT_EQ(one.size_class, two.size_class);
     ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
     ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
   }
 }
+
+TEST(AdaptiveMethods, ResultIndependentOfThreadCount) { expectThreadIndependent("thesis"); }
+
+// The incompressible solvers with split and merge: their placement iterations
+// (local_placement.h) included.
+TEST(AdaptiveMethods, PbfResultIndependentOfThreadCount) { expectThreadIndependent("pbf"); }
+TEST(AdaptiveMethods, DfsphResultIndependentOfThreadCount) { expectThreadIndependent("dfsph"); }
 
 }  // namespace
