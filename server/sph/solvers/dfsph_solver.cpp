@@ -90,37 +90,28 @@ void DfsphSolver::advance(const FrameContext& frame) {
 void DfsphSolver::placeFresh(const FrameContext& frame) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
-  if (std::find(p.placed.begin(), p.placed.end(), kPlacedThisFrame) == p.placed.end()) return;
   fresh_.reserve(p.capacity());
-  const auto t = std::chrono::steady_clock::now();
-  for (auto* v : {&place_lambda_, &place_lambda_step_, &density_at_start_}) {
-    v->reserve(p.capacity());
-    v->assign(n, 0.0f);
-  }
-  for (auto* v : {&place_next_position_, &place_wall_grad_}) {
-    v->reserve(p.capacity());
-    v->resize(n);
-  }
-  std::copy(p.density.begin(), p.density.end(), density_at_start_.begin());
-  placement_constants_.box = frame.scene.boundary.stateAt(frame.time);
-  placement_constants_.obstacles = &frame.scene.boundary;
-  frame.grid.build(p);
-  PbfArrays a;
-  a.n = n;
-  a.mass = p.mass.data();
-  a.support = p.support.data();
-  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
-  a.density = p.density.data();
-  a.lambda = place_lambda_.data();
-  a.lambda_step = place_lambda_step_.data();
-  a.wall_grad = place_wall_grad_.data()->data();
-  const PbfPassForms forms = simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms();
-  // The placements' densities where they now sit (a child carries its parent's), from a constraint
-  // pass over them alone; its multipliers are discarded, the placement starts from zero.
   fresh_.clear();
   for (std::size_t i = 0; i < n; ++i) {
     if (p.placed[i] == kPlacedThisFrame) fresh_.push_back(static_cast<std::uint32_t>(i));
   }
+  if (fresh_.empty()) return;
+  const auto t = std::chrono::steady_clock::now();
+  for (auto* v : {&place_lambda_, &place_lambda_step_, &density_at_start_}) v->reserve(p.capacity());
+  place_lambda_.assign(n, 0.0f);
+  place_lambda_step_.assign(n, 0.0f);
+  density_at_start_.assign(p.density.begin(), p.density.end());
+  for (auto* v : {&place_next_position_, &place_wall_grad_}) {
+    v->reserve(p.capacity());
+    v->resize(n);
+  }
+  placement_constants_.box = frame.scene.boundary.stateAt(frame.time);
+  placement_constants_.obstacles = &frame.scene.boundary;
+  frame.grid.build(p);
+  PbfArrays a = pbfArraysOf(p, place_lambda_, place_lambda_step_, place_wall_grad_);
+  const PbfPassForms forms = dispatchedPbfPassForms();
+  // The placements' densities where they now sit (a child carries its parent's), from a constraint
+  // pass over them alone; its multipliers are discarded, the placement starts from zero.
   a.position = p.position.data()->data();
   a.only = fresh_.data();
   a.only_count = fresh_.size();

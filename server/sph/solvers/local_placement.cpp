@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sph/simd/simd_level.h"
+
 namespace sph {
 
 namespace {
@@ -48,6 +50,24 @@ PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& 
   c.tensile_n = params.pbf_tensile_n;
   c.boundary = setup.boundary.get();
   return c;
+}
+
+PbfPassForms dispatchedPbfPassForms() {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms();
+}
+
+PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<float>& lambda_step,
+                      std::vector<Vec3>& wall_grad) {
+  PbfArrays a;
+  a.n = p.size();
+  a.mass = p.mass.data();
+  a.support = p.support.data();
+  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  a.density = p.density.data();
+  a.lambda = lambda.data();
+  a.lambda_step = lambda_step.data();
+  a.wall_grad = wall_grad.data()->data();
+  return a;
 }
 
 int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, PbfArrays& a, const PbfConstants& c,

@@ -28,6 +28,14 @@ inline constexpr std::uint8_t kPlacedThisFrame = 1;
 // the obstacles are the caller's to set for the time it moves particles at.
 PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& setup);
 
+// The pbf passes' form this CPU runs (simd_level.h).
+PbfPassForms dispatchedPbfPassForms();
+
+// The pbf passes' view of `p` with the caller's multipliers and wall-gradient scratch (sized to
+// p.size()); the positions are set per pass.
+PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<float>& lambda_step,
+                      std::vector<Vec3>& wall_grad);
+
 class LocalPlacement {
  public:
   // Moves the particles marked kPlacedThisFrame whose density exceeds max(density_at_start, rho0)

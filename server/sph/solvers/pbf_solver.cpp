@@ -6,7 +6,6 @@
 #include <string>
 
 #include "sph/collision.h"
-#include "sph/simd/simd_level.h"
 #include "sph/thread_share.h"
 
 namespace sph {
@@ -16,8 +15,6 @@ namespace {
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
-
-PbfPassForms passForms() { return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms(); }
 
 // At most this many frames relax fresh water (incompressible_setup.h).
 constexpr int kSettleFrames = 200;
@@ -98,7 +95,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   constants_.box = frame.scene.boundary.stateAt(t0 + dt);
   constants_.obstacles = &frame.scene.boundary;
   velocity_constants_.dt = dt;
-  const PbfPassForms forms = passForms();
+  const PbfPassForms forms = dispatchedPbfPassForms();
 
   // Predict (MM13 algorithm 1, lines 1-4): gravity, then the positions it leads to.
   auto t = std::chrono::steady_clock::now();
@@ -120,15 +117,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   markNearPlacements(frame.grid, p);
   frame.timings.neighbor_ms += msSince(t);
 
-  PbfArrays a;
-  a.n = n;
-  a.mass = p.mass.data();
-  a.support = p.support.data();
-  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
-  a.density = p.density.data();
-  a.lambda = lambda_.data();
-  a.lambda_step = lambda_step_.data();
-  a.wall_grad = wall_grad_.data()->data();
+  PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
 
   // Solve the density constraints (lines 8-19) from lambda = 0 (MM13), the artificial pressure
   // with the first correction. No warm start from the last step's multipliers: the constraint's
