@@ -81,7 +81,8 @@ struct ParticleAttributes {
   // Where a split or a merge puts a particle is a choice of the method, not a motion of the water:
   // pbf lets the density constraint move a placed particle without making it faster, until the
   // constraint holds it, and iterates longer in the frame after a placement (pbf_solver.cpp);
-  // after other solvers' frames Simulation::step clears it.
+  // dfsph moves fresh placements apart by position before that frame's first step
+  // (local_placement.h); after other solvers' frames Simulation::step clears it.
   std::vector<std::uint8_t> placed;
 };
 

@@ -68,8 +68,8 @@ void Simulation::step() {
   }
   solver_->advance(
       {scene_, particles_, grid_, time_, scene_.params.time_step, track_surface_distance_, timings_, solver_stats_});
-  // pbf keeps a placed particle's flag until its density constraint holds (pbf_solver.cpp); the
-  // other solvers do not read it.
+  // pbf keeps a placed particle's flag until its density constraint holds (pbf_solver.cpp); dfsph
+  // reads it only in the frame after the placement (local_placement.h), the thesis's solver never.
   if (scene_.params.solver != Solver::kPbf)
     std::fill(particles_.placed.begin(), particles_.placed.end(), std::uint8_t{0});
 
