@@ -78,7 +78,6 @@ inline __m512 average(__mmask16 mixed, __m512 own, __m512 other) {
 
 using lanes::gather;
 using lanes::liveLanes;
-using lanes::tripleIndex;
 
 // 1 / |r| from r^2: the 14-bit estimate and one Newton step (about 1 ulp), 0 where r = 0 (the
 // direction is undefined there, as in spikyGradFactor; such pairs get their pressure from
@@ -105,21 +104,23 @@ struct LaneCentre {
   }
 };
 
-// 16 neighbour entries: which lanes are live, the neighbours j, r = x_i - x_j (x_i the lane
-// owner's centre) and |r|^2.
+// 16 neighbour entries: which lanes are live, the neighbours j (and where they are listed, for
+// gatherTriples), r = x_i - x_j (x_i the lane owner's centre) and |r|^2.
 struct PairBatch {
   __mmask16 live;
-  __m512i j, j3;
+  __m512i j;
+  const std::uint32_t* list;
   __m512 dx, dy, dz, r2;
 
   PairBatch(__mmask16 live_lanes, const std::uint32_t* indices, const LaneCentre& c, const float* pos)
-      : live(live_lanes),
-        j(_mm512_maskz_loadu_epi32(live, indices)),
-        j3(tripleIndex(j)),
-        dx(c.x - gather(live, j3, pos)),
-        dy(c.y - gather(live, j3, pos + 1)),
-        dz(c.z - gather(live, j3, pos + 2)),
-        r2(dx * dx + dy * dy + dz * dz) {}
+      : live(live_lanes), j(_mm512_maskz_loadu_epi32(live, indices)), list(indices) {
+    __m512 xj, yj, zj;
+    lanes::gatherTriples(live, indices, pos, xj, yj, zj);
+    dx = c.x - xj;
+    dy = c.y - yj;
+    dz = c.z - zj;
+    r2 = dx * dx + dy * dy + dz * dz;
+  }
 };
 
 // What both pair loops need to tell the size classes apart and evaluate their kernels.
@@ -358,9 +359,11 @@ class ForceStage {
     t.dz = pair.dz;
     t.s = mj * (o.pressure_term + gather(live, j, pressure_term_)) * kern.spiky;  // (3.13) / rho_i
     t.sv = volj * kern.visc;                                                      // (3.14)
-    t.dux = gather(live, pair.j3, vel_) - o.ux;
-    t.duy = gather(live, pair.j3, vel_ + 1) - o.uy;
-    t.duz = gather(live, pair.j3, vel_ + 2) - o.uz;
+    __m512 vjx, vjy, vjz;
+    lanes::gatherTriples(live, pair.list, vel_, vjx, vjy, vjz);
+    t.dux = vjx - o.ux;
+    t.duy = vjy - o.uy;
+    t.duz = vjz - o.uz;
     t.sc = volj * kern.cgrad;  // (3.16)-(3.18)
     t.lap = volj * kern.clap;
     t.hop = propagate_ ? gather(live, j, surface_distance_) + rl : _mm512_setzero_ps();

@@ -38,6 +38,11 @@ class NeighborGrid {
   }
   std::uint32_t neighborCount(std::size_t i) const { return neighbor_count_[i]; }
 
+  // Where particle i's list starts among the grid's slotCount() slots: a value per pair computed
+  // once a build (dfsph's kernel gradients) can be kept in an array of its own at the same slots.
+  std::size_t neighborSlot(std::size_t i) const { return neighbor_start_[i]; }
+  std::size_t slotCount() const { return neighbor_index_.size(); }
+
   // Particles come in blocks of kBlockSize (the last one shorter) whose lists lie back to back:
   // particle i + 1's list starts where i's ends when both are in one block. Block b holds
   // particles [b kBlockSize, min(n, (b + 1) kBlockSize)).

@@ -21,9 +21,11 @@ struct Avx512Lanes {
   static F zero() { return _mm512_setzero_ps(); }
   static M live(std::uint32_t left) { return lanes::liveLanes(left); }
   static I loadIndex(const std::uint32_t* p, M m) { return _mm512_maskz_loadu_epi32(m, p); }
+  static F load(const float* p, M m) { return _mm512_maskz_loadu_ps(m, p); }
+  static void store(float* p, M m, F v) { _mm512_mask_storeu_ps(p, m, v); }
   static F gather(M m, I j, const float* base) { return lanes::gather(m, j, base); }
-  static F gather3(M m, I j, const float* base, int axis) {
-    return lanes::gather(m, lanes::tripleIndex(j), base + axis);
+  static void gatherTriples(M m, const std::uint32_t* list, const float* base, F& x, F& y, F& z) {
+    lanes::gatherTriples(m, list, base, x, y, z);
   }
   static M le(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
   static M lt(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }

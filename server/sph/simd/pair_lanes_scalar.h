@@ -7,7 +7,9 @@
 //   set(x), zero()         a value in every lane
 //   live(left)             the first min(left, width) lanes
 //   loadIndex(p, m)        p[l] on the live lanes
-//   gather(m, j, base)     base[j_l] (0 on dead lanes); gather3(m, j, base, axis): base[3 j_l + axis]
+//   load(p, m), store(p, m, v)  p[l] on the live lanes (0 on dead lanes), written on the live lanes
+//   gather(m, j, base)     base[j_l] (0 on dead lanes)
+//   gatherTriples(m, list, base, x, y, z)  base[3 j + 0, 1, 2] for j = list[l] (0 on dead lanes)
 //   le, lt, neq            comparisons -> M; any(m); andMask(a, b)
 //   select(m, a, b)        a where m, else b; maskz(m, a): a where m, else 0
 //   max, min, sqrt; sum(v), minOf(v): over the lanes
@@ -29,8 +31,15 @@ struct ScalarLanes {
   static F zero() { return 0.0f; }
   static M live(std::uint32_t left) { return left > 0; }
   static I loadIndex(const std::uint32_t* p, M) { return *p; }
+  static F load(const float* p, M) { return *p; }
+  static void store(float* p, M, F v) { *p = v; }
   static F gather(M, I j, const float* base) { return base[j]; }
-  static F gather3(M, I j, const float* base, int axis) { return base[3 * static_cast<std::size_t>(j) + axis]; }
+  static void gatherTriples(M, const std::uint32_t* list, const float* base, F& x, F& y, F& z) {
+    const float* t = base + 3 * static_cast<std::size_t>(*list);
+    x = t[0];
+    y = t[1];
+    z = t[2];
+  }
   static M le(F a, F b) { return a <= b; }
   static M lt(F a, F b) { return a < b; }
   static M neq(F a, F b) { return a != b; }
