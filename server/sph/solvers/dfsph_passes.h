@@ -25,6 +25,7 @@
 #include "sph/boundary_volume.h"
 #include "sph/kernels.h"
 #include "sph/neighbor_grid.h"
+#include "sph/solvers/pair_vectors.h"
 
 namespace sph {
 
@@ -38,12 +39,9 @@ struct DfsphArrays {
   float* inverse_diagonal = nullptr;    // the density pass's
   float* boundary_grad = nullptr;       // grad Phi_i (packed)
   float* boundary_wall_rate = nullptr;  // grad Phi_i . v_wall
-  // m_j grad W_ij of every pair, written by the density pass at the pair's neighbour slot
-  // (NeighborGrid::neighborSlot): x at [0, S), y at [S, 2 S), z at [2 S, 3 S), S = pair_slots.
-  // The positions stay put through both solves, so their iterations read these instead of
-  // evaluating the kernel again.
-  float* pair_grad = nullptr;
-  std::size_t pair_slots = 0;
+  // m_j grad W_ij of every pair, written by the density pass (pair_vectors.h): the positions
+  // stay put through both solves, so their iterations read these.
+  PairVectors pair_grad;
   const float* field = nullptr;      // the change pass's u (packed)
   bool with_wall_rate = true;        // subtract boundary_wall_rate (for velocities, not accelerations)
   float* change = nullptr;           // the change pass's result

@@ -200,7 +200,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
 
   auto t = std::chrono::steady_clock::now();
   frame.grid.build(p);
-  pair_grad_.resize(3 * frame.grid.slotCount());
+  arrays_.pair_grad = pair_grad_.fit(frame.grid);
   frame.timings.neighbor_ms += msSince(t);
 
   DfsphArrays& a = arrays_;
@@ -213,8 +213,6 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   a.inverse_diagonal = inverse_diagonal_.data();
   a.boundary_grad = boundary_grad_.data()->data();
   a.boundary_wall_rate = wall_rate_.data();
-  a.pair_grad = pair_grad_.data();
-  a.pair_slots = frame.grid.slotCount();
   a.change = change_.data();
   a.stiffness = stiffness_.data();
   a.acceleration = acceleration_.data()->data();

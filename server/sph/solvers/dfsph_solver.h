@@ -14,6 +14,7 @@
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
+#include "sph/solvers/pair_vectors.h"
 #include "sph/solvers/pbf_passes.h"
 #include "sph/solvers/velocity_passes.h"
 
@@ -43,7 +44,7 @@ class DfsphSolver : public FluidSolver {
   // Scratch, sized once at the ceiling.
   std::vector<Vec3> boundary_grad_, next_velocity_, vorticity_, acceleration_;
   std::vector<float> inverse_diagonal_, wall_rate_, change_, target_, stiffness_;
-  std::vector<float> pair_grad_;  // DfsphArrays::pair_grad, sized to the grid's slots
+  PairVectorStore pair_grad_;  // DfsphArrays::pair_grad
   PbfConstants placement_constants_;
   LocalPlacement placement_;
   std::vector<Vec3> place_next_position_, place_wall_grad_;
