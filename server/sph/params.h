@@ -57,8 +57,12 @@ struct SimParams {
 
   // The incompressible solvers. time_step stays the frame (a step of the simulation: what the
   // server publishes and the adaptive step follows); they take solver steps inside it.
-  int substeps = 2;              // pbf: solver steps per frame; dfsph: at least this many (CFL may add)
-  int pbf_iterations = 3;        // pbf: Jacobi iterations of the density constraint per solver step
+  int substeps = 2;        // pbf: solver steps per frame; dfsph: at least this many (CFL may add)
+  int pbf_iterations = 3;  // pbf: Jacobi iterations of the density constraint per solver step
+  // pbf: past pbf_iterations, a step iterates on while its mean compression (rho / rho0 - 1
+  // where positive) exceeds this, up to pbf_max_iterations; 0: pbf_iterations exactly.
+  double pbf_density_tolerance = 0.0;
+  int pbf_max_iterations = 20;
   double pbf_relaxation = 0.01;  // pbf: constraint force mixing, relative to a full neighbourhood's (MM13 eq. 11)
   double pbf_tensile_k = 0.1;    // pbf: artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13)
   double pbf_tensile_dq = 0.2;

@@ -60,6 +60,19 @@ TEST(SceneLoader, ParamsOverrideThePreset) {
   EXPECT_DOUBLE_EQ(s.params.time_step, 0.003);
 }
 
+TEST(SceneLoader, PbfIterationBoundsAreReadAndChecked) {
+  const sph::Scene s = scene::parseScene(
+      withKey(R"("preset": "pbf", "params": {"pbf_density_tolerance": 0, "pbf_max_iterations": 8})"), "t");
+  EXPECT_DOUBLE_EQ(s.params.pbf_density_tolerance, 0.0);
+  EXPECT_EQ(s.params.pbf_max_iterations, 8);
+  EXPECT_GT(scene::parseScene(withKey(R"("preset": "pbf")"), "t").params.pbf_density_tolerance, 0.0);
+  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_density_tolerance": -0.01})")).find("params.pbf_density_tolerance"),
+            std::string::npos);
+  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_max_iterations": 0})")).find("params.pbf_max_iterations"),
+            std::string::npos);
+  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_max_iterations": 500})")).find("pbf_max_iterations"), std::string::npos);
+}
+
 TEST(SceneLoader, CallersPresetReplacesTheScenesAndParamsStillApply) {
   const std::string text = withKey(R"("preset": "thesis", "params": {"xsph_viscosity": 0.05})");
   const sph::Scene s = scene::parseScene(text, "t", "dfsph");

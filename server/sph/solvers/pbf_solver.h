@@ -6,8 +6,9 @@
 // Each step solves from zero multipliers (pbf_solver.cpp says why not from the last step's), so
 // a few Jacobi iterations hold a deep column as a stiff equation of state would: the compression
 // grows with the depth and with dt^2 and falls with the iterations, so the preset takes four steps
-// a frame of three iterations each (params.cpp). The last step's multipliers give the pressure the
-// frames show. Fresh water is relaxed at rest first (settle: incompressible_setup.h).
+// a frame of at least three iterations each, more where the mean compression is over its
+// tolerance (params.cpp). The mean of the steps' multipliers gives the pressure the frames show.
+// Fresh water is relaxed at rest first (settle: incompressible_setup.h).
 #pragma once
 
 #include <vector>
@@ -38,6 +39,7 @@ class PbfSolver : public FluidSolver {
   std::vector<float> lambda_, lambda_step_;
   std::vector<float> density_at_start_;  // the frame's, for the placed particles' extra iterations
   LocalPlacement placement_;
+  std::vector<float> pressure_sum_;  // the frame's steps' pressures, summed
 };
 
 }  // namespace sph
