@@ -86,6 +86,7 @@ void PbfSolver::advance(const FrameContext& frame) {
   // The frame's pressure is the mean of its steps': where the iterations a step takes vary (the
   // density tolerance), one step's multipliers push more or less than the weight above them, and
   // the last step's alone gave a deep column's pressure slope as 0.66 rho0 g (the mean: 0.99-1.05).
+  pressure_sum_.reserve(p.capacity());
   pressure_sum_.assign(p.size(), 0.0f);
   for (int s = 0; s < steps; ++s) {
     substep(frame, frame.time + s * dt, static_cast<float>(dt), s == steps - 1);
