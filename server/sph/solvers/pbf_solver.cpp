@@ -86,12 +86,10 @@ void PbfSolver::advance(const FrameContext& frame) {
   // The frame's pressure is the mean of its steps': where the iterations a step takes vary (the
   // density tolerance), one step's multipliers push more or less than the weight above them, and
   // the last step's alone gave a deep column's pressure slope as 0.66 rho0 g (the mean: 0.99-1.05).
+  // Each step adds its pressure to pressure_sum_ (nothing reads p.pressure between the steps).
   pressure_sum_.reserve(p.capacity());
   pressure_sum_.assign(p.size(), 0.0f);
-  for (int s = 0; s < steps; ++s) {
-    substep(frame, frame.time + s * dt, static_cast<float>(dt), s == steps - 1);
-    for (std::size_t i = 0; i < p.size(); ++i) pressure_sum_[i] += p.pressure[i];
-  }
+  for (int s = 0; s < steps; ++s) substep(frame, frame.time + s * dt, static_cast<float>(dt), s == steps - 1);
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.pressure[i] = pressure_sum_[i] / static_cast<float>(steps);
     p.pressure_term[i] = p.pressure[i] / (p.density[i] * p.density[i]);
@@ -205,16 +203,15 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   p.velocity.swap(next_velocity_);
 
   // The attributes the rest of the step and the frames read: density (of the last constraint
-  // pass), volume, and the pressure whose impulse the corrections were: dx_i = dt^2 a_i with
-  // a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij matches pbf_passes.h's dx term by
-  // term for lambda_i = -dt^2 m_i rho0 p_i / rho_i^2.
+  // pass), volume, and (added to pressure_sum_ for advance) the pressure whose impulse the
+  // corrections were: dx_i = dt^2 a_i with a_i = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2)
+  // grad W_ij matches pbf_passes.h's dx term by term for lambda_i = -dt^2 m_i rho0 p_i / rho_i^2.
   const float rho0 = static_cast<float>(frame.scene.params.rest_density);
   double error = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : error)
   for (std::size_t i = 0; i < n; ++i) {
-    p.pressure[i] = -lambda_[i] * p.density[i] * p.density[i] / (rho0 * p.mass[i] * dt * dt);
+    pressure_sum_[i] += -lambda_[i] * p.density[i] * p.density[i] / (rho0 * p.mass[i] * dt * dt);
     p.volume[i] = p.mass[i] / p.density[i];
-    p.pressure_term[i] = p.pressure[i] / (p.density[i] * p.density[i]);
     error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);
   }
   frame.stats.density_error = n > 0 ? static_cast<float>(error / static_cast<double>(n)) : 0.0f;
