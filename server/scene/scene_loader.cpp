@@ -126,6 +126,11 @@ void readParams(const Context& ctx, const json& params, sph::SimParams& p) {
       {"divergence_tolerance",
        [&](const json& v, const std::string& k) { p.divergence_tolerance = ctx.positive(v, k); }},
       {"max_iterations", [&](const json& v, const std::string& k) { p.max_iterations = ctx.positiveInt(v, k); }},
+      {"conjugate_gradients",
+       [&](const json& v, const std::string& k) {
+         if (!v.is_boolean()) ctx.fail(k, "must be true or false");
+         p.conjugate_gradients = v.get<bool>();
+       }},
   };
   if (!params.is_object()) ctx.fail("params", "must be an object");
   for (const auto& [name, value] : params.items()) {

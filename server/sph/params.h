@@ -71,9 +71,14 @@ struct SimParams {
   double vorticity_confinement = 0.0;  // pbf: epsilon of vorticity confinement (MM13 eq. 16), m/s; 0: off
   double cfl = 0.4;                    // dfsph: solver step <= cfl * particle diameter / max speed
   int max_substeps = 40;               // dfsph: at most this many solver steps per frame
-  double density_tolerance = 5e-4;     // dfsph: mean |rho / rho0 - 1| the constant-density solver stops at
+  double density_tolerance = 5e-4;     // dfsph: mean compression after the step the constant-density solver stops at
   double divergence_tolerance = 1e-3;  // dfsph: mean |d rho / dt| / rho0 * dt the divergence solver stops at
   int max_iterations = 100;            // dfsph: per solver, per step
+  // dfsph: the constant-density solve turns from Jacobi to conjugate gradients after its first
+  // three iterations (dfsph_conjugate_gradients.cpp): a quarter to half the iterations, but water
+  // at rest keeps moving at a few mm/s (Jacobi: under 1) and one step's pressure scatters more
+  // (docs/fluids.md); off in the preset.
+  bool conjugate_gradients = false;
 
   std::array<SizeClassProps, kSizeClassCount> classes() const;
   double surfaceThreshold() const;  // l, eq. (3.36)

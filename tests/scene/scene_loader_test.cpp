@@ -73,6 +73,14 @@ TEST(SceneLoader, PbfIterationBoundsAreReadAndChecked) {
   EXPECT_NE(errorOf(withKey(R"("params": {"pbf_max_iterations": 500})")).find("pbf_max_iterations"), std::string::npos);
 }
 
+TEST(SceneLoader, DfsphSolveChoiceIsReadAndChecked) {
+  EXPECT_FALSE(scene::parseScene(withKey(R"("preset": "dfsph")"), "t").params.conjugate_gradients);
+  EXPECT_TRUE(scene::parseScene(withKey(R"("preset": "dfsph", "params": {"conjugate_gradients": true})"), "t")
+                  .params.conjugate_gradients);
+  EXPECT_NE(errorOf(withKey(R"("params": {"conjugate_gradients": "no"})")).find("params.conjugate_gradients"),
+            std::string::npos);
+}
+
 TEST(SceneLoader, CallersPresetReplacesTheScenesAndParamsStillApply) {
   const std::string text = withKey(R"("preset": "thesis", "params": {"xsph_viscosity": 0.05})");
   const sph::Scene s = scene::parseScene(text, "t", "dfsph");

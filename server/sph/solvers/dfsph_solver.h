@@ -2,10 +2,11 @@
 // each solver step finds the neighbours, computes densities, makes the velocity field
 // divergence-free (the divergence solver), adds gravity and XSPH viscosity, solves for the
 // pressure that brings the density after the step to rho0 (the constant-density solver), and
-// moves the particles. Both solvers are relaxed Jacobi iterations for k = p / rho^2 >= 0 (water
-// pushes, never pulls) to a tolerance, warm-started from the last step's k (attributes, so it
-// follows its particle through reorders, splits and merges). Solver steps obey a CFL bound, and
-// a frame takes at least SimParams::substeps of them.
+// moves the particles. Both solvers iterate for k = p / rho^2 >= 0 (water pushes, never pulls)
+// to a tolerance, warm-started from the last step's k (attributes, so it follows its particle
+// through reorders, splits and merges): relaxed Jacobi iterations, and for the constant density,
+// past the first three, conjugate gradients (SimParams::conjugate_gradients). Solver steps obey a
+// CFL bound, and a frame takes at least SimParams::substeps of them.
 #pragma once
 
 #include <vector>
@@ -36,6 +37,10 @@ class DfsphSolver : public FluidSolver {
   // (density_target) or its rate 0, from `warm` (the last step's k, which receives this step's),
   // then the velocities it gives. Returns the iterations taken.
   int solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt);
+  // solve's iterations for the constant density past the first Jacobi ones, from the k and the
+  // change_ they left (dfsph_conjugate_gradients.cpp); returns the iteration count reached.
+  int conjugateGradients(const FrameContext& frame, const DfsphPassForms& forms, float scale, float tolerance,
+                         int least, int iteration);
 
   IncompressibleSetup setup_;
   DfsphConstants constants_;
@@ -44,6 +49,8 @@ class DfsphSolver : public FluidSolver {
   // Scratch, sized once at the ceiling.
   std::vector<Vec3> boundary_grad_, next_velocity_, vorticity_, acceleration_;
   std::vector<float> inverse_diagonal_, wall_rate_, change_, target_, stiffness_;
+  std::vector<float> residual_, search_, preconditioned_, anchor_;  // conjugateGradients'
+  std::vector<std::uint8_t> active_;
   PairVectorStore pair_grad_;  // DfsphArrays::pair_grad
   PbfConstants placement_constants_;
   LocalPlacement placement_;
