@@ -10,9 +10,10 @@ namespace sph {
 
 namespace {
 
-// The proximal weight, and the iterations on one anchor (below). A tank 14 layers deep (1,400 particles) after 9 s:
-// 0.05 and 8 keep it at 2.5 mm/s rms (without the proximal term 8 mm/s; Jacobi alone 0.2) in 22 iterations a frame
-// (Jacobi 59); 0.2 at 0.9 mm/s in 42. One anchor a step with 0.15 kept them from reaching the tolerance.
+// The proximal weight, and the iterations on one anchor (below). A tank 14 layers deep (1,400
+// particles) after 9 s: 0.05 and 8 keep it at 2.5 mm/s rms (without the proximal term 8 mm/s;
+// Jacobi alone 0.2); 0.2 at 0.9 mm/s, but with twice the iterations, and one anchor a step with
+// 0.15 kept them from reaching the tolerance (docs/performance.md).
 constexpr float kProximal = 0.05f;
 constexpr int kAnchorIterations = 8;
 

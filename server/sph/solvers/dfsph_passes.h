@@ -1,8 +1,8 @@
 // The pair passes of divergence-free SPH (Bender & Koschier 2015, 2017, "BK17", in the form of
-// SPlisHSPlasH's current DFSPH: a relaxed Jacobi solve for the pressure, here sped up by
-// conjugate gradients), one form per instruction set (simd_level.h), the same source for both
-// (dfsph_passes.inc); dfsph_solver.cpp and dfsph_conjugate_gradients.cpp run the solves with them. With the walls'
-// volume Phi (boundary_volume.h), k = p / rho^2:
+// SPlisHSPlasH's current DFSPH: a relaxed Jacobi solve for the pressure, here optionally sped up
+// by conjugate gradients), one form per instruction set (simd_level.h), the same source for both
+// (dfsph_passes.inc); dfsph_solver.cpp and dfsph_conjugate_gradients.cpp run the solves with
+// them. With the walls' volume Phi (boundary_volume.h), k = p / rho^2:
 //   density       rho_i = sum_j m_j W_ij + rho0 Phi_i, and the inverse Jacobi diagonal
 //                 1 / (|G + B|^2 + m_i sum_j m_j |grad W_ij|^2),
 //                 G = sum_j m_j grad W_ij, B = rho0 grad Phi_i (BK17 eq. 7's factor over rho)

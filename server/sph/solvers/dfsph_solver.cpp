@@ -31,6 +31,7 @@ constexpr float kRelaxation = 0.5f;
 // (DfsphSolver::conjugateGradients). The divergence solve, a few iterations a step, stays Jacobi:
 // conjugate gradients there took more iterations in both solves (dam break).
 constexpr int kJacobiIterations = 3;
+
 // Fresh placements are moved apart (local_placement.h) until none sits more than this share of
 // rest density above its parent's density (or rho0), in at most this many iterations. The solver
 // turns what compression is left into speed within one step: splitting every particle of a pool

@@ -9,6 +9,7 @@
 // CFL bound, and a frame takes at least SimParams::substeps of them.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "sph/solvers/dfsph_passes.h"
