@@ -1,6 +1,6 @@
 // sum_i term(i) in double, summed in blocks of a fixed size and the blocks in order: the same sum
 // whatever the thread count (an OpenMP reduction's order depends on it), for the figures a
-// solver's further steps depend on, such as conjugate gradients' step lengths.
+// solver's further steps depend on: conjugate gradients' step lengths, pbf's iteration count.
 #pragma once
 
 #include <algorithm>

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sph/collision.h"
+#include "sph/solvers/ordered_sum.h"
 #include "sph/thread_share.h"
 
 namespace sph {
@@ -31,13 +32,11 @@ constexpr std::uint8_t kPlacedEarlier = 2;
 constexpr std::uint8_t kNearPlacement = 3;
 
 // Mean of rho / rho0 - 1 over the particles, where positive: what the tolerance bounds. Summed in
-// one thread, in order, so the count of iterations it decides is the same for any thread count.
+// a fixed order (ordered_sum.h), so the count of iterations it decides is the same for any thread count.
 double meanCompression(const ParticleSet& p, float rest_density) {
   if (p.size() == 0) return 0.0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    sum += std::max(static_cast<double>(p.density[i]) / rest_density - 1.0, 0.0);
-  }
+  const double sum = orderedSum(
+      p.size(), [&](std::size_t i) { return std::max(static_cast<double>(p.density[i]) / rest_density - 1.0, 0.0); });
   return sum / static_cast<double>(p.size());
 }
 
