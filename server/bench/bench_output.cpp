@@ -84,6 +84,15 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["total_mass_end"] = run.mass_end;
   j["nan_values"] = s.nan_values;              // summed over all frames
   j["particles_outside_box"] = s.outside_box;  // summed over all frames
+  // At the last frame (water_level.h): the volume as sum m / rho against sum m / rho0, and the
+  // gauges' mean level against the depth sum m / rho0 fills; null where no gauge fits.
+  j["volume_end"] = {{"sum_m_over_rho", run.volume_end}, {"sum_m_over_rho0", run.incompressible_volume}};
+  const WaterLevel& level = run.water_level;
+  j["water_level_end"] = level.gauges > 0 ? nlohmann::json{{"depth", level.depth},
+                                                           {"incompressible_depth", level.incompressible_depth},
+                                                           {"gauges", level.gauges},
+                                                           {"wet_gauges", level.wet}}
+                                          : nlohmann::json();
   openOut(path) << j.dump(2) << "\n";
 }
 
@@ -106,17 +115,34 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
   }
 }
 
+std::string describeVolume(const RunResult& run) {
+  char buf[256];
+  const double volume =
+      run.incompressible_volume > 0.0 ? 100.0 * (run.volume_end / run.incompressible_volume - 1.0) : 0.0;
+  const WaterLevel& level = run.water_level;
+  if (level.gauges == 0 || level.incompressible_depth <= 0.0) {
+    std::snprintf(buf, sizeof buf, "volume (sum m / rho) %+.2f %%, level n/a (no gauge clear of the walls)", volume);
+  } else {
+    std::snprintf(buf, sizeof buf,
+                  "volume (sum m / rho) %+.2f %%, level %.4f m against %.4f m (%+.2f %%, %d of %d gauges wet)", volume,
+                  level.depth, level.incompressible_depth, 100.0 * (level.depth / level.incompressible_depth - 1.0),
+                  level.wet, level.gauges);
+  }
+  return buf;
+}
+
 std::string summaryText(const RunResult& run, const Summary& s) {
-  char buf[1024];
+  char buf[2048];
   std::snprintf(buf, sizeof buf,
                 "%s/%s: %d frames, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
                 "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s | "
                 "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
-                "NaN %zu, outside %zu | other load: %s",
+                "NaN %zu, outside %zu | at the end: %s | other load: %s",
                 run.scene.c_str(), run.method.c_str(), run.frames, run.threads, s.neighbor.mean,
                 s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean, s.total.p95,
                 s.steps_per_s, s.mean_large, s.mean_small, s.mean_neighbors, s.mean_density_ratio, s.max_density_ratio,
-                run.mass_start, run.mass_end, s.nan_values, s.outside_box, describe(run.machine_load).c_str());
+                run.mass_start, run.mass_end, s.nan_values, s.outside_box, describeVolume(run).c_str(),
+                describe(run.machine_load).c_str());
   return buf;
 }
 

@@ -24,6 +24,8 @@ struct Summary {
 Summary summarize(const RunResult& run);
 void writeSummaryJson(const RunResult& run, const Summary& s, const std::string& path);
 void writeFramesCsv(const RunResult& run, const std::string& path);
+// The water's volume and level at the last frame, in words (water_level.h).
+std::string describeVolume(const RunResult& run);
 // One line for the terminal.
 std::string summaryText(const RunResult& run, const Summary& s);
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bench/machine_load.h"
+#include "bench/water_level.h"
 #include "gaze/gaze_recording.h"
 #include "sph/adaptive/adaptive_controller.h"
 #include "sph/scene.h"
@@ -51,6 +52,11 @@ struct RunResult {
   // turns (sph_bench --interleave), the window of the whole scene.
   MachineLoad machine_load;
   std::vector<FrameRecord> records;
+  // At the last frame: the water's volume as sum m / rho and as m / rho0 (m^3), and its level
+  // (water_level.h).
+  double volume_end = 0.0;
+  double incompressible_volume = 0.0;
+  WaterLevel water_level;
 };
 
 struct RunOptions {

@@ -123,6 +123,14 @@ void writeSurgeFront(const std::vector<FrontRun>& runs, const fs::path& dir) {
   }
 }
 
+// The gauges' depth over the depth sum m / rho0 fills (water_level.h), or n/a.
+std::string depthRatio(const bench::WaterLevel& level) {
+  if (level.gauges == 0 || level.incompressible_depth <= 0.0) return "n/a";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4f", level.depth / level.incompressible_depth);
+  return buf;
+}
+
 void writeRestProfiles(const std::vector<std::pair<std::string, bench::RestProfile>>& profiles, double rho0,
                        const fs::path& dir) {
   std::ofstream csv(dir / "hydrostatic.csv");
@@ -136,13 +144,14 @@ void writeRestProfiles(const std::vector<std::pair<std::string, bench::RestProfi
   }
   std::ofstream md(dir / "hydrostatic.md");
   md << "# Water at rest: the hydrostatic tank after settling\n\n"
-     << "| preset | mean density error | wall and floor layers | rms speed (mm/s) | pressure slope / (rho0 g) |\n"
-     << "|---|---|---|---|---|\n";
+     << "| preset | mean density error | wall and floor layers | rms speed (mm/s) | pressure slope / (rho0 g) | "
+        "depth / incompressible depth |\n"
+     << "|---|---|---|---|---|---|\n";
   for (const auto& [preset, r] : profiles) {
     char row[256];
-    std::snprintf(row, sizeof row, "| %s | %s | %s | %.2f | %.3f |\n", preset.c_str(),
+    std::snprintf(row, sizeof row, "| %s | %s | %s | %.2f | %.3f | %s |\n", preset.c_str(),
                   percent(r.mean_density_error).c_str(), percent(r.wall_density_error).c_str(), 1000.0 * r.rms_speed,
-                  r.pressure_slope / (rho0 * kGravity));
+                  r.pressure_slope / (rho0 * kGravity), depthRatio(r.level).c_str());
     md << row;
   }
 }
@@ -237,12 +246,13 @@ int main(int argc, char** argv) {
       const auto& p = run.simulation().particles();
       const double spacing = std::cbrt(p.mass.empty() ? 0.0 : p.mass[0] / rho0);
       profiles.emplace_back(preset, bench::measureRestProfile(p, rho0, box.min, box.max, 2.0 * spacing));
-      const bench::RestProfile& r = profiles.back().second;
+      bench::RestProfile& r = profiles.back().second;
+      r.level = run.result().water_level;
       std::fprintf(stderr,
                    "[hydrostatic %s] mean density error %s, wall/floor %s, rms speed %.2f mm/s, pressure slope %.3f "
-                   "rho0 g\n",
+                   "rho0 g, depth / incompressible depth %s\n",
                    preset.c_str(), percent(r.mean_density_error).c_str(), percent(r.wall_density_error).c_str(),
-                   1000.0 * r.rms_speed, r.pressure_slope / (rho0 * kGravity));
+                   1000.0 * r.rms_speed, r.pressure_slope / (rho0 * kGravity), depthRatio(r.level).c_str());
     }
     writeSurgeFront(fronts, dir);
     writeRestProfiles(profiles, rho0, dir);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/water_level.h"
 #include "sph/particles.h"
 
 namespace bench {
@@ -63,6 +64,7 @@ struct RestProfile {
   double wall_density_error = 0.0;  // the largest |mean rho / rho0 - 1| of the wall and floor layers
   double pressure_slope = 0.0;      // least squares dp / d(depth) over the interior, Pa/m (rho0 g)
   double rms_speed = 0.0;           // m/s
+  WaterLevel level;                 // the gauges' depth against sum m / rho0's (water_level.h)
 };
 // `box_min`/`box_max`: the tank; wall and floor layers are the particles within one spacing of a wall.
 RestProfile measureRestProfile(const sph::ParticleSet& particles, double rest_density, const Eigen::Vector3f& box_min,

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "bench/bench_compare.h"
+#include "bench/bench_output.h"
 #include "bench/bench_plan.h"
 #include "bench/bench_run.h"
 #include "bench/gaze_replay.h"
@@ -132,6 +133,27 @@ TEST(BenchRun, RunContinuedFromACheckpointEndsWhereTheUninterruptedOneDoes) {
   EXPECT_GT(whole.size(), 1000u);
   EXPECT_TRUE(whole == bytesOf(file("resumed.ckpt")));
   std::filesystem::remove_all(dir);
+}
+
+// The run's result reads the water at its last frame: a pbf pool over the whole floor, at rest
+// from the start, stands at the depth its mass fills at rho0 (water_level.h), and the summary says so.
+TEST(BenchRun, ResultReadsTheWaterLevelAtTheEnd) {
+  sph::Scene s = tinyScene(0.5, 1058);  // 4 full SMALL layers of 23 x 23
+  s.water.max.y() = 0.12;
+  s.params = sph::pbfPreset();
+  bench::RunOptions options;
+  options.frames = 10;
+  const bench::RunResult run = bench::runScene(s, "regular", options);
+  const bench::WaterLevel& level = run.water_level;
+  EXPECT_NEAR(level.incompressible_depth, run.incompressible_volume / (0.5 * 0.5), 1e-9);
+  EXPECT_GT(level.gauges, 4);
+  EXPECT_EQ(level.wet, level.gauges);
+  // pbf holds it within its 1 % tolerance of compression (level -1.6 %, sum m / rho +0.9 %: the
+  // top layer reads under-dense).
+  EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.03);
+  EXPECT_NEAR(run.volume_end / run.incompressible_volume, 1.0, 0.03);
+  const std::string text = bench::describeVolume(run);
+  EXPECT_NE(text.find("level"), std::string::npos) << text;
 }
 
 TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {

@@ -1,0 +1,151 @@
+// The water's level as the bench's gauges read it (bench/water_level.h): a lattice at rest density
+// reads its own depth, squeezed water reads lower, and the depth the water's mass fills at rho0
+// accounts for the obstacles.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "bench/water_level.h"
+#include "sph/params.h"
+
+namespace {
+
+// A box `cells` spacings square and 1 m high, with `layers` layers of `size_class` particles on
+// a cubic lattice at rest density (the spacing cbrt(m / rho0)), squeezed vertically by `squeeze`.
+struct Pool {
+  sph::Boundary boundary;
+  sph::BoxState box;
+  sph::ParticleSet particles{40000};
+  double spacing = 0.0;
+  double rest_density = 0.0;
+};
+
+Pool latticePool(sph::SizeClass size_class, int cells, int layers, double squeeze = 1.0) {
+  Pool pool;
+  sph::SimParams params;
+  EXPECT_TRUE(sph::presetByName("pbf", params));
+  pool.rest_density = params.rest_density;
+  const sph::SizeClassProps props = params.classes()[sph::classIndex(size_class)];
+  pool.spacing = std::cbrt(props.mass / params.rest_density);
+  const double side = cells * pool.spacing;
+  pool.boundary.box.max = Eigen::Vector3d(side, 1.0, side);
+  pool.box = pool.boundary.stateAt(0.0);
+  for (int y = 0; y < layers; ++y) {
+    for (int z = 0; z < cells; ++z) {
+      for (int x = 0; x < cells; ++x) {
+        const sph::Vec3 at(static_cast<float>((x + 0.5) * pool.spacing),
+                           static_cast<float>((y + 0.5) * pool.spacing * squeeze),
+                           static_cast<float>((z + 0.5) * pool.spacing));
+        pool.particles.add(at, sph::Vec3::Zero(), size_class, props);
+      }
+    }
+  }
+  return pool;
+}
+
+TEST(WaterLevel, ALatticeAtRestDensityReadsItsOwnDepth) {
+  for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
+    const Pool pool = latticePool(c, 24, 10);
+    const bench::WaterLevel level =
+        bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+    const double depth = 10 * pool.spacing;
+    std::printf("class %d: level %.5f m, lattice %.5f m, incompressible %.5f m, %d of %d gauges wet\n",
+                static_cast<int>(c), level.depth, depth, level.incompressible_depth, level.wet, level.gauges);
+    EXPECT_NEAR(level.incompressible_depth, depth, 1e-6 * depth);
+    EXPECT_GT(level.gauges, 16);
+    EXPECT_EQ(level.wet, level.gauges);
+    EXPECT_NEAR(level.depth / depth, 1.0, 0.002);
+  }
+}
+
+// Water whose particles stand off their lattice (each by up to 0.3 spacings on each axis, as
+// moving water does) still reads its depth: the gauge finds where the water ends, not a layer.
+TEST(WaterLevel, DisorderedWaterReadsItsDepth) {
+  Pool pool = latticePool(sph::SizeClass::Small, 24, 10);
+  std::uint32_t state = 12345;
+  auto offset = [&] {  // in [-0.3, 0.3) spacings, a linear congruential sequence
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>((static_cast<double>(state >> 8) / (1 << 24) - 0.5) * 0.6 * pool.spacing);
+  };
+  for (sph::Vec3& x : pool.particles.position) x += sph::Vec3(offset(), offset(), offset());
+  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
+}
+
+// Water squeezed 2 % reads 2 % lower, where its sum m / rho0 fills the same depth as before.
+TEST(WaterLevel, SqueezedWaterReadsLower) {
+  const Pool pool = latticePool(sph::SizeClass::Small, 24, 10, 0.98);
+  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  EXPECT_NEAR(level.depth / level.incompressible_depth, 0.98, 0.004);
+}
+
+// LARGE layers under SMALL ones (the surface method's water at rest): the gauges read the depth
+// both fill together. The SMALL layers' horizontal spacing is the box's side over a whole count,
+// their vertical one keeps them at rest density.
+TEST(WaterLevel, LayersOfBothClassesReadTheirJointDepth) {
+  Pool pool = latticePool(sph::SizeClass::Large, 20, 4);
+  sph::SimParams params;
+  ASSERT_TRUE(sph::presetByName("pbf", params));
+  const sph::SizeClassProps small = params.classes()[sph::classIndex(sph::SizeClass::Small)];
+  const double side = pool.box.max.x();
+  const int cells = static_cast<int>(std::lround(side / std::cbrt(small.mass / params.rest_density)));
+  const double across = side / cells;
+  const double up = small.mass / (params.rest_density * across * across);
+  const double floor_of_small = 4 * pool.spacing;
+  for (int y = 0; y < 6; ++y) {
+    for (int z = 0; z < cells; ++z) {
+      for (int x = 0; x < cells; ++x) {
+        const sph::Vec3 at(static_cast<float>((x + 0.5) * across), static_cast<float>(floor_of_small + (y + 0.5) * up),
+                           static_cast<float>((z + 0.5) * across));
+        pool.particles.add(at, sph::Vec3::Zero(), sph::SizeClass::Small, small);
+      }
+    }
+  }
+  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  EXPECT_NEAR(level.incompressible_depth, floor_of_small + 6 * up, 1e-5);
+  EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
+}
+
+// Water over half the floor: the gauges over the other half are dry.
+TEST(WaterLevel, GaugesOverDryFloorReadNothing) {
+  Pool pool = latticePool(sph::SizeClass::Small, 24, 6);
+  const float half = pool.box.max.x() / 2.0f;
+  std::vector<std::uint8_t> keep(pool.particles.size());
+  for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = pool.particles.position[i].x() < half;
+  pool.particles.compact(keep);
+  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  EXPECT_GT(level.wet, level.gauges * 2 / 5);
+  EXPECT_LE(level.wet, level.gauges * 3 / 5);
+  EXPECT_LT(level.depth, 0.6 * 6 * pool.spacing);
+}
+
+// The depth a volume fills: a 1 x 1 m floor with a floor-to-roof cylinder of radius 0.1 and a
+// sphere of radius 0.2 centred on the floor, so below 0.2 m a depth d holds
+// d - pi 0.01 d - pi (0.04 d - d^3 / 3).
+TEST(WaterLevel, IncompressibleDepthLeavesOutTheObstacles) {
+  sph::Boundary boundary;
+  boundary.box.max = Eigen::Vector3d(1.0, 1.0, 1.0);
+  boundary.cylinders.push_back({0.3, 0.3, 0.1});
+  boundary.spheres.push_back({Eigen::Vector3d(0.7, 0.0, 0.7), 0.2});
+  const sph::BoxState box = boundary.stateAt(0.0);
+  const double d = 0.1;
+  const double held = d - std::numbers::pi * 0.01 * d - std::numbers::pi * (0.04 * d - d * d * d / 3.0);
+  EXPECT_NEAR(bench::incompressibleDepth(held, boundary, box), d, 1e-9);
+  sph::Boundary bare;
+  bare.box = boundary.box;
+  EXPECT_NEAR(bench::incompressibleDepth(0.5, bare, box), 0.5, 1e-9);
+  EXPECT_DOUBLE_EQ(bench::incompressibleDepth(2.0, boundary, box), 1.0);  // more than the box holds
+}
+
+// A gauge stands clear of the walls and the obstacles by the largest support.
+TEST(WaterLevel, GaugesStayClearOfObstacles) {
+  Pool pool = latticePool(sph::SizeClass::Small, 24, 4);
+  const int open = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density).gauges;
+  const double centre = pool.box.max.x() / 2.0;
+  pool.boundary.cylinders.push_back({centre, centre, 0.05});
+  const int around = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density).gauges;
+  EXPECT_LT(around, open);
+  EXPECT_GT(around, 0);
+}
+}  // namespace
