@@ -20,9 +20,9 @@ struct IncompressibleSetup {
   std::array<CubicKernel, kSizeClassCount> kernels;
   std::array<float, kSizeClassCount> mass{};
   std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
-  // The nearest a particle's centre may come to a wall (0.3 spacings), a guard. A lattice at half
-  // a spacing from a wall reads rho0 there, but the one-sided walls hold settled water only by
-  // compressing it, and its floor layer comes to rest on this guard (docs/fluids.md, Known defects).
+  // The nearest a particle's centre may come to a wall: pbf half a spacing, dfsph 0.4 spacings
+  // (incompressible_setup.cpp). The one-sided walls hold settled water only by compressing it, so
+  // its wall layers come to rest on this distance, not where the walls' density would put them.
   std::array<float, kSizeClassCount> contact{};
   // On a resting lattice of the class: sum_j m_j |grad W_ij|^2 (the gradient sum itself vanishes
   // by symmetry).
