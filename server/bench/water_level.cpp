@@ -84,11 +84,20 @@ double incompressibleDepth(double volume, const sph::Boundary& boundary, const s
   const double floor = box.min.y();
   const double height = box.max.y() - floor;
   const double area = static_cast<double>(box.max.x() - box.min.x()) * (box.max.z() - box.min.z());
-  // The water a depth d holds: the box's prism less the obstacles in it (cylinders run floor to roof).
+  // The water a depth d holds: the box's prism less the obstacles in it (cylinders run floor to
+  // roof). An obstacle counts whole when its axis or centre stands over the floor, else not at all
+  // (the dam break's obstacles stand outside its box until the box opens).
+  auto over = [&](double x, double z) {
+    return x >= box.min.x() && x <= box.max.x() && z >= box.min.z() && z <= box.max.z();
+  };
   auto held = [&](double d) {
     double v = area * d;
-    for (const sph::Cylinder& c : boundary.cylinders) v -= std::numbers::pi * c.radius * c.radius * d;
-    for (const sph::Sphere& s : boundary.spheres) v -= sphereSlab(s, floor, floor + d);
+    for (const sph::Cylinder& c : boundary.cylinders) {
+      if (over(c.x, c.z)) v -= std::numbers::pi * c.radius * c.radius * d;
+    }
+    for (const sph::Sphere& s : boundary.spheres) {
+      if (over(s.centre.x(), s.centre.z())) v -= sphereSlab(s, floor, floor + d);
+    }
     return v;
   };
   if (held(height) <= volume) return height;

@@ -13,8 +13,6 @@
 // depth; it is the settled depth once the water is at rest.
 #pragma once
 
-#include <cstddef>
-
 #include "sph/boundary.h"
 #include "sph/particles.h"
 
@@ -33,7 +31,8 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& particles, const sph::Bound
                              double rest_density);
 
 // The depth that `volume` (m^3) fills from the floor of `box`, less what the boundary's spheres and
-// floor-to-roof cylinders take up to that height; the box's height if it holds less.
+// floor-to-roof cylinders standing over that floor take up to that height; the box's height if it
+// holds less.
 double incompressibleDepth(double volume, const sph::Boundary& boundary, const sph::BoxState& box);
 
 }  // namespace bench

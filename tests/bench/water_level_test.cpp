@@ -136,6 +136,11 @@ TEST(WaterLevel, IncompressibleDepthLeavesOutTheObstacles) {
   bare.box = boundary.box;
   EXPECT_NEAR(bench::incompressibleDepth(0.5, bare, box), 0.5, 1e-9);
   EXPECT_DOUBLE_EQ(bench::incompressibleDepth(2.0, boundary, box), 1.0);  // more than the box holds
+  // Obstacles beyond the box (the dam break's, before its box opens) take nothing from it.
+  sph::Boundary beyond = bare;
+  beyond.cylinders.push_back({1.3, 0.5, 0.1});
+  beyond.spheres.push_back({Eigen::Vector3d(0.5, 0.0, 1.4), 0.2});
+  EXPECT_NEAR(bench::incompressibleDepth(0.5, beyond, box), 0.5, 1e-9);
 }
 
 // A gauge stands clear of the walls and the obstacles by the largest support.
