@@ -33,6 +33,9 @@ std::ofstream openOut(const std::string& path) {
 
 nlohmann::json phaseJson(const PhaseStats& p) { return {{"mean_ms", p.mean}, {"p95_ms", p.p95}}; }
 
+// sum m / rho at the last frame (the frames' volume column).
+double volumeAtEnd(const RunResult& run) { return run.records.empty() ? 0.0 : run.records.back().volume; }
+
 }  // namespace
 
 Summary summarize(const RunResult& run) {
@@ -86,7 +89,7 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["particles_outside_box"] = s.outside_box;  // summed over all frames
   // At the last frame (water_level.h): the volume as sum m / rho against sum m / rho0, and the
   // gauges' mean level against the depth sum m / rho0 fills; null where no gauge fits.
-  j["volume_end"] = {{"sum_m_over_rho", run.volume_end}, {"sum_m_over_rho0", run.incompressible_volume}};
+  j["volume_end"] = {{"sum_m_over_rho", volumeAtEnd(run)}, {"sum_m_over_rho0", run.incompressible_volume}};
   const WaterLevel& level = run.water_level;
   j["water_level_end"] = level.gauges > 0 ? nlohmann::json{{"depth", level.depth},
                                                            {"incompressible_depth", level.incompressible_depth},
@@ -118,7 +121,7 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
 std::string describeVolume(const RunResult& run) {
   char buf[256];
   const double volume =
-      run.incompressible_volume > 0.0 ? 100.0 * (run.volume_end / run.incompressible_volume - 1.0) : 0.0;
+      run.incompressible_volume > 0.0 ? 100.0 * (volumeAtEnd(run) / run.incompressible_volume - 1.0) : 0.0;
   const WaterLevel& level = run.water_level;
   if (level.gauges == 0 || level.incompressible_depth <= 0.0) {
     std::snprintf(buf, sizeof buf, "volume (sum m / rho) %+.2f %%, level n/a (no gauge clear of the walls)", volume);

@@ -130,7 +130,6 @@ RunResult SceneRun::result() const {
   out.neighbor_stride = sim_->grid().stride();
   out.machine_load = loadBetween(start_, takeCpuSnapshot());
   const double rho0 = sim_->params().rest_density;
-  out.volume_end = out.records.empty() ? 0.0 : out.records.back().volume;
   out.incompressible_volume = out.mass_end / rho0;
   out.water_level = measureWaterLevel(sim_->particles(), sim_->scene().boundary, sim_->boxNow(), rho0);
   return out;

@@ -52,9 +52,8 @@ struct RunResult {
   // turns (sph_bench --interleave), the window of the whole scene.
   MachineLoad machine_load;
   std::vector<FrameRecord> records;
-  // At the last frame: the water's volume as sum m / rho and as m / rho0 (m^3), and its level
-  // (water_level.h).
-  double volume_end = 0.0;
+  // At the last frame: the water's volume as m / rho0 (m^3; as sum m / rho it is the last record's
+  // `volume`), and its level (water_level.h).
   double incompressible_volume = 0.0;
   WaterLevel water_level;
 };

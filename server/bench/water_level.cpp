@@ -15,7 +15,7 @@ struct Candidate {
   double y;
   double horizontal_sq;  // squared distance from the line
   double mass;
-  double support;
+  sph::CubicKernel kernel;  // of the particle's own support
 };
 
 // sum_j m_j W(x - x_j, h_j) at height y on the gauge's line, with the incompressible solvers'
@@ -26,9 +26,8 @@ double densityAt(const std::vector<Candidate>& near, double y) {
   for (const Candidate& c : near) {
     const double dy = y - c.y;
     const double r_sq = c.horizontal_sq + dy * dy;
-    if (r_sq >= c.support * c.support) continue;
-    const double sigma = 8.0 / (std::numbers::pi * c.support * c.support * c.support);
-    sum += c.mass * sigma * sph::cubicShape(static_cast<float>(std::sqrt(r_sq) / c.support));
+    if (r_sq >= static_cast<double>(c.kernel.h) * c.kernel.h) continue;
+    sum += c.mass * sph::cubicW(c.kernel, static_cast<float>(std::sqrt(r_sq)));
   }
   return sum;
 }
@@ -38,7 +37,7 @@ double densityAt(const std::vector<Candidate>& near, double y) {
 // floor's height when it never does (a dry gauge).
 double levelOf(const std::vector<Candidate>& near, double floor, double step, double half) {
   double top = floor;
-  for (const Candidate& c : near) top = std::max(top, c.y + c.support);
+  for (const Candidate& c : near) top = std::max(top, c.y + c.kernel.h);
   double above = top;
   double y = top - step;
   while (y > floor && densityAt(near, y) < half) {
@@ -156,7 +155,7 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Boundary& bou
             const double hz = p.position[i].z() - z;
             const double h_sq = hx * hx + hz * hz;
             if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-              near.push_back({p.position[i].y(), h_sq, p.mass[i], p.support[i]});
+              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::CubicKernel::forSupport(p.support[i])});
             }
           }
         }
