@@ -26,6 +26,7 @@
 #include "sph/boundary_volume.h"
 #include "sph/kernels.h"
 #include "sph/neighbor_grid.h"
+#include "sph/solvers/pair_kernels.h"
 #include "sph/solvers/pair_vectors.h"
 
 namespace sph {
@@ -51,7 +52,7 @@ struct DfsphArrays {
 };
 
 struct DfsphConstants {
-  std::array<CubicKernel, kSizeClassCount> kernels;
+  PairKernels kernels;
   float rest_density = 0.0f;
   const BoundaryVolume* boundary = nullptr;
   BoxState box;

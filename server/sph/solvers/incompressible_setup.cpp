@@ -43,15 +43,15 @@ constexpr float kDfsphContact = 0.4f;
 IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
   IncompressibleSetup s;
   const auto classes = scene.params.classes();
+  s.kernels = PairKernels::forSupports({classes[0].support, classes[1].support});
   for (int c = 0; c < kSizeClassCount; ++c) {
     const auto cu = static_cast<std::size_t>(c);
-    s.kernels[cu] = CubicKernel::forSupport(classes[cu].support);
     s.mass[cu] = static_cast<float>(classes[cu].mass);
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
     s.contact[cu] = (scene.params.solver == Solver::kPbf ? kPbfContact : kDfsphContact) * s.spacing[cu];
     s.lattice_grad_sq[cu] = s.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
   }
-  s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels, s.spacing);
+  s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels.classes, s.spacing);
   return s;
 }
 

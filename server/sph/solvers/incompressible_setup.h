@@ -12,12 +12,13 @@
 #include "sph/particles.h"
 #include "sph/scene.h"
 #include "sph/solvers/fluid_solver.h"
+#include "sph/solvers/pair_kernels.h"
 #include "sph/solvers/velocity_passes.h"
 
 namespace sph {
 
 struct IncompressibleSetup {
-  std::array<CubicKernel, kSizeClassCount> kernels;
+  PairKernels kernels;
   std::array<float, kSizeClassCount> mass{};
   std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
   // The nearest a particle's centre may come to a wall: pbf half a spacing, dfsph 0.4 spacings

@@ -32,6 +32,7 @@
 #include "sph/boundary_volume.h"
 #include "sph/kernels.h"
 #include "sph/neighbor_grid.h"
+#include "sph/solvers/pair_kernels.h"
 
 namespace sph {
 
@@ -56,7 +57,7 @@ struct PbfArrays {
 };
 
 struct PbfConstants {
-  std::array<CubicKernel, kSizeClassCount> kernels;
+  PairKernels kernels;
   float rest_density = 0.0f;
   std::array<float, kSizeClassCount> relaxation{};         // eps, absolute
   std::array<float, kSizeClassCount> lambda_scale{};       // l_c: lambda of a full neighbourhood at C = 1

@@ -17,6 +17,7 @@
 
 #include "sph/kernels.h"
 #include "sph/neighbor_grid.h"
+#include "sph/solvers/pair_kernels.h"
 
 namespace sph {
 
@@ -36,7 +37,7 @@ struct VelocityArrays {
 };
 
 struct VelocityConstants {
-  std::array<CubicKernel, kSizeClassCount> kernels;
+  PairKernels kernels;
   float dt = 0.0f;
   float xsph = 0.0f;
   float vorticity_epsilon = 0.0f;  // m/s: the confinement's acceleration is eps (N x omega)

@@ -1,0 +1,31 @@
+// The cubic kernels of the incompressible solvers' pairs: each class's own, and the one a mixed
+// SMALL-LARGE pair shares, of the mean support (h_i + h_j) / 2 (pair_kernel.inc says why, not the
+// thesis's average of both (3.35)). Its support is the reach of the neighbour lists, eq. (3.34),
+// so no pair is cut short.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "sph/kernels.h"
+#include "sph/params.h"
+
+namespace sph {
+
+struct PairKernels {
+  std::array<CubicKernel, kSizeClassCount> classes{};
+  CubicKernel mixed;
+
+  CubicKernel& operator[](std::size_t c) { return classes[c]; }
+  const CubicKernel& operator[](std::size_t c) const { return classes[c]; }
+
+  // Each class's kernel of the given support, and the mixed pairs'.
+  static PairKernels forSupports(const std::array<double, kSizeClassCount>& support) {
+    PairKernels k;
+    for (std::size_t c = 0; c < k.classes.size(); ++c) k.classes[c] = CubicKernel::forSupport(support[c]);
+    k.mixed = CubicKernel::forSupport(0.5 * (support[0] + support[1]));
+    return k;
+  }
+};
+
+}  // namespace sph
