@@ -1,7 +1,7 @@
 // The cubic kernels of the incompressible solvers' pairs: each class's own, and the one a mixed
-// SMALL-LARGE pair shares, of the mean support (h_i + h_j) / 2 (pair_kernel.inc says why, not the
-// thesis's average of both (3.35)). Its support is the reach of the neighbour lists, eq. (3.34),
-// so no pair is cut short.
+// SMALL-LARGE pair shares, of the mean support (h_i + h_j) / 2, where the thesis averages both
+// classes' kernels (3.35); pair_kernel.inc says why. Its support is the neighbour lists' reach,
+// eq. (3.34), so no pair is cut short.
 #pragma once
 
 #include <array>
