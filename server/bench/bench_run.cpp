@@ -131,7 +131,7 @@ RunResult SceneRun::result() const {
   out.machine_load = loadBetween(start_, takeCpuSnapshot());
   const double rho0 = sim_->params().rest_density;
   out.incompressible_volume = out.mass_end / rho0;
-  out.water_level = measureWaterLevel(sim_->particles(), sim_->scene().boundary, sim_->boxNow(), rho0);
+  out.water_level = measureWaterLevel(sim_->particles(), sim_->scene(), sim_->boxNow());
   return out;
 }
 

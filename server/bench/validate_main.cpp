@@ -247,7 +247,7 @@ int main(int argc, char** argv) {
       const double spacing = std::cbrt(p.mass.empty() ? 0.0 : p.mass[0] / rho0);
       profiles.emplace_back(preset, bench::measureRestProfile(p, rho0, box.min, box.max, 2.0 * spacing));
       bench::RestProfile& r = profiles.back().second;
-      r.level = bench::measureWaterLevel(p, run.simulation().scene().boundary, box, rho0);
+      r.level = bench::measureWaterLevel(p, run.simulation().scene(), box);
       std::fprintf(stderr,
                    "[hydrostatic %s] mean density error %s, wall/floor %s, rms speed %.2f mm/s, pressure slope %.3f "
                    "rho0 g, depth / incompressible depth %s\n",

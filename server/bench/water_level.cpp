@@ -1,10 +1,12 @@
 #include "bench/water_level.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
+#include "sph/boundary_volume.h"
 #include "sph/kernels.h"
 
 namespace bench {
@@ -16,31 +18,92 @@ struct Candidate {
   double horizontal_sq;  // squared distance from the line
   double mass;
   sph::CubicKernel kernel;  // of the particle's own support
+  int class_index;
 };
 
-// sum_j m_j W(x - x_j, h_j) at height y on the gauge's line, with the incompressible solvers'
-// cubic spline (kernels.h); over a half-space at rest any symmetric kernel gives rho0 / 2 at the
-// surface.
-double densityAt(const std::vector<Candidate>& near, double y) {
-  double sum = 0.0;
-  for (const Candidate& c : near) {
+// The walls' volume (boundary_volume.h) in two parts: the floor alone, and the side walls with the
+// obstacles. The floor continues the water's lattice below it, so its density adds to the water's
+// (a sheet one layer deep on it then reads like the top of deep water); a side wall stands beside
+// the water and above it too, so adding it would count wall above the surface as water: it divides
+// out instead, the water's sum taken over the part of the kernel the wall leaves to it.
+struct Walls {
+  sph::BoundaryVolume floor;
+  sph::BoundaryVolume sides;
+  sph::BoxState floor_only;  // the box's floor, its other faces out of reach
+  sph::BoxState sides_only;  // its side faces, floor and roof out of reach
+};
+
+sph::Boundary boxAlone(const sph::Boundary& boundary) {
+  sph::Boundary out;
+  out.box = boundary.box;
+  return out;
+}
+
+Walls wallsOf(const sph::Scene& scene, const sph::BoxState& box) {
+  const auto classes = scene.params.classes();
+  std::array<sph::CubicKernel, sph::kSizeClassCount> kernels;
+  std::array<float, sph::kSizeClassCount> spacing{};
+  for (std::size_t c = 0; c < kernels.size(); ++c) {
+    kernels[c] = sph::CubicKernel::forSupport(static_cast<float>(classes[c].support));
+    spacing[c] = static_cast<float>(std::cbrt(classes[c].mass / scene.params.rest_density));
+  }
+  constexpr float kFar = 1e6f;  // metres: beyond any kernel's reach
+  Walls walls{sph::BoundaryVolume(boxAlone(scene.boundary), kernels, spacing),
+              sph::BoundaryVolume(scene.boundary, kernels, spacing), box, box};
+  walls.floor_only.min.x() = walls.floor_only.min.z() = -kFar;
+  walls.floor_only.max = sph::Vec3(kFar, kFar, kFar);
+  walls.sides_only.min.y() = -kFar;
+  walls.sides_only.max.y() = kFar;
+  return walls;
+}
+
+// A gauge's vertical line at (x, z) and what it reads there.
+struct Gauge {
+  double x = 0.0;
+  double z = 0.0;
+  const std::vector<Candidate>* near = nullptr;
+  const Walls* walls = nullptr;
+  double rest_density = 0.0;
+};
+
+// The density at height y on the gauge's line: sum_j m_j W(x - x_j, h_j), with the incompressible
+// solvers' cubic spline (kernels.h), plus the floor's rho0 Phi_floor, over 1 - Phi_sides (Walls,
+// above); each class's Phi weighted by its share of the water's sum there. Over a half-space at
+// rest any symmetric kernel gives rho0 / 2 at the surface.
+double densityAt(const Gauge& g, double y) {
+  double by_class[sph::kSizeClassCount] = {};
+  for (const Candidate& c : *g.near) {
     const double dy = y - c.y;
     const double r_sq = c.horizontal_sq + dy * dy;
     if (r_sq >= static_cast<double>(c.kernel.h) * c.kernel.h) continue;
-    sum += c.mass * sph::cubicW(c.kernel, static_cast<float>(std::sqrt(r_sq)));
+    by_class[c.class_index] += c.mass * sph::cubicW(c.kernel, static_cast<float>(std::sqrt(r_sq)));
   }
-  return sum;
+  double water = 0.0;
+  for (double d : by_class) water += d;
+  if (water <= 0.0) return 0.0;
+  const sph::Vec3 at(static_cast<float>(g.x), static_cast<float>(y), static_cast<float>(g.z));
+  double floor_phi = 0.0;
+  double sides_phi = 0.0;
+  for (int c = 0; c < sph::kSizeClassCount; ++c) {
+    if (by_class[c] <= 0.0) continue;
+    const double share = by_class[c] / water;
+    floor_phi += share * g.walls->floor.sample(at, c, g.walls->floor_only).phi;
+    sides_phi += share * g.walls->sides.sample(at, c, g.walls->sides_only).phi;
+  }
+  // A gauge stands at least half a SMALL spacing off every side wall and obstacle, where a side's
+  // Phi stays under a half (measureWaterLevel); the bound only keeps the quotient finite.
+  return (water + g.rest_density * floor_phi) / std::max(1.0 - sides_phi, 0.25);
 }
 
 // The highest height on the line where the interpolated density reaches `half` (kg/m^3): stepping
 // down from above the highest support in steps of `step`, then halving the bracket. Returns the
 // floor's height when it never does (a dry gauge).
-double levelOf(const std::vector<Candidate>& near, double floor, double step, double half) {
+double levelOf(const Gauge& g, double floor, double step, double half) {
   double top = floor;
-  for (const Candidate& c : near) top = std::max(top, c.y + c.kernel.h);
+  for (const Candidate& c : *g.near) top = std::max(top, c.y + c.kernel.h);
   double above = top;
   double y = top - step;
-  while (y > floor && densityAt(near, y) < half) {
+  while (y > floor && densityAt(g, y) < half) {
     above = y;
     y -= step;
   }
@@ -48,15 +111,13 @@ double levelOf(const std::vector<Candidate>& near, double floor, double step, do
   double below = y;  // density >= half here, < half at `above`
   for (int i = 0; i < 30; ++i) {
     const double mid = 0.5 * (below + above);
-    (densityAt(near, mid) >= half ? below : above) = mid;
+    (densityAt(g, mid) >= half ? below : above) = mid;
   }
   return 0.5 * (below + above);
 }
 
-// Whether a gauge at (x, z) is farther than `reach` from every wall and obstacle.
-bool clear(double x, double z, const sph::Boundary& boundary, const sph::BoxState& box, double reach) {
-  if (x - box.min.x() < reach || box.max.x() - x < reach) return false;
-  if (z - box.min.z() < reach || box.max.z() - z < reach) return false;
+// Whether a gauge at (x, z) is at least `reach` from every obstacle.
+bool clear(double x, double z, const sph::Boundary& boundary, double reach) {
   for (const sph::Cylinder& c : boundary.cylinders) {
     if (std::hypot(x - c.x, z - c.z) < c.radius + reach) return false;
   }
@@ -109,19 +170,23 @@ double incompressibleDepth(double volume, const sph::Boundary& boundary, const s
   return 0.5 * (lo + hi);
 }
 
-WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Boundary& boundary, const sph::BoxState& box,
-                             double rest_density) {
+WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene, const sph::BoxState& box) {
   WaterLevel out;
+  const double rest_density = scene.params.rest_density;
   double mass = 0.0;
-  double reach = 0.0;     // the largest support: a gauge's neighbourhood, and its distance from walls
+  double reach = 0.0;     // the largest support: a gauge's neighbourhood and its grid's step
   double shortest = 0.0;  // the smallest support, for the step of the level search
   for (std::size_t i = 0; i < p.size(); ++i) {
     mass += p.mass[i];
     reach = std::max(reach, static_cast<double>(p.support[i]));
     shortest = shortest == 0.0 ? p.support[i] : std::min(shortest, static_cast<double>(p.support[i]));
   }
-  out.incompressible_depth = incompressibleDepth(mass / rest_density, boundary, box);
+  out.incompressible_depth = incompressibleDepth(mass / rest_density, scene.boundary, box);
   if (p.empty() || reach <= 0.0) return out;
+  const Walls walls = wallsOf(scene, box);
+  // Half a SMALL spacing: where a wall layer's particle stands, its line clear of any solid.
+  const auto classes = scene.params.classes();
+  const double half_spacing = 0.5 * std::cbrt(classes[sph::classIndex(sph::SizeClass::Small)].mass / rest_density);
 
   // The particles binned into columns of the largest support, so a gauge reads 3 x 3 columns.
   const double x0 = box.min.x();
@@ -136,31 +201,37 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Boundary& bou
   std::vector<std::vector<std::size_t>> columns(static_cast<std::size_t>(nx) * nz);
   for (std::size_t i = 0; i < p.size(); ++i) columns[column(p.position[i].x(), p.position[i].z())].push_back(i);
 
+  // One gauge at the centre of each column, so the gauges cover the whole floor in equal shares,
+  // up to the walls, whose share of the kernel densityAt accounts for.
   const double floor = box.min.y();
   const double step = shortest / 8.0;
+  const double dx = (box.max.x() - x0) / nx;
+  const double dz = (box.max.z() - z0) / nz;
   std::vector<Candidate> near;
   double level_sum = 0.0;
-  for (double z = z0 + reach; z <= box.max.z() - reach + 1e-9; z += reach) {
-    for (double x = x0 + reach; x <= box.max.x() - reach + 1e-9; x += reach) {
-      if (!clear(x, z, boundary, box, reach)) continue;
+  for (int gz = 0; gz < nz; ++gz) {
+    for (int gx = 0; gx < nx; ++gx) {
+      const Gauge gauge{x0 + (gx + 0.5) * dx, z0 + (gz + 0.5) * dz, &near, &walls, rest_density};
+      if (!clear(gauge.x, gauge.z, scene.boundary, half_spacing)) continue;
       near.clear();
-      const int home = column(x, z);
-      for (int dz = -1; dz <= 1; ++dz) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int cx = home % nx + dx;
-          const int cz = home / nx + dz;
+      const int home = column(gauge.x, gauge.z);
+      for (int oz = -1; oz <= 1; ++oz) {
+        for (int ox = -1; ox <= 1; ++ox) {
+          const int cx = home % nx + ox;
+          const int cz = home / nx + oz;
           if (cx < 0 || cz < 0 || cx >= nx || cz >= nz) continue;
           for (std::size_t i : columns[static_cast<std::size_t>(cz) * nx + cx]) {
-            const double hx = p.position[i].x() - x;
-            const double hz = p.position[i].z() - z;
+            const double hx = p.position[i].x() - gauge.x;
+            const double hz = p.position[i].z() - gauge.z;
             const double h_sq = hx * hx + hz * hz;
             if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::CubicKernel::forSupport(p.support[i])});
+              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::CubicKernel::forSupport(p.support[i]),
+                              sph::classIndex(p.size_class[i])});
             }
           }
         }
       }
-      const double level = levelOf(near, floor, step, 0.5 * rest_density) - floor;
+      const double level = levelOf(gauge, floor, step, 0.5 * rest_density) - floor;
       ++out.gauges;
       out.wet += level > 0.0;
       level_sum += level;

@@ -7,14 +7,18 @@
 // density sum_j m_j W(x - x_j, h_j) still reaches half of rho0, as the gauges of DualSPHysics
 // (Crespo et al. 2015) find the free surface. Over a resting half-space of water at rho0 that is
 // where the water ends, half a spacing above its top layer, whatever the (symmetric) kernel. The
-// gauges stand on a grid over the floor, each farther than the largest support from the walls and
-// the obstacles, whose neighbourhoods do not see the whole water. Where the surface is a single
-// height over the floor (no overhang, no spray), the mean level over the gauges is the water's
-// depth; it is the settled depth once the water is at rest.
+// walls count as the solvers count them (boundary_volume.h): the floor's density adds to the
+// water's, and the part of the kernel a side wall or an obstacle takes is divided out, so a gauge
+// beside a wall, or over a sheet thinner than a support, reads like one in open deep water. The
+// gauges stand one in each cell of a grid over the whole floor, less the cells whose centre is
+// within half a SMALL spacing of an obstacle. Where the surface is a single height over the floor
+// (no overhang, no spray), the mean level over the gauges is the water's depth, moving or not; it
+// is the settled depth once the water is at rest.
 #pragma once
 
 #include "sph/boundary.h"
 #include "sph/particles.h"
+#include "sph/scene.h"
 
 namespace bench {
 
@@ -26,9 +30,9 @@ struct WaterLevel {
   double incompressible_depth = 0.0;
 };
 
-// `box`: the container now (Boundary::stateAt); the obstacles are boundary's spheres and cylinders.
-WaterLevel measureWaterLevel(const sph::ParticleSet& particles, const sph::Boundary& boundary, const sph::BoxState& box,
-                             double rest_density);
+// `box`: the container now (Boundary::stateAt); the obstacles are the scene boundary's spheres and
+// cylinders; the rest density and the classes' kernels are the scene's parameters'.
+WaterLevel measureWaterLevel(const sph::ParticleSet& particles, const sph::Scene& scene, const sph::BoxState& box);
 
 // The depth that `volume` (m^3) fills from the floor of `box`, less what the boundary's spheres and
 // floor-to-roof cylinders standing over that floor take up to that height; the box's height if it

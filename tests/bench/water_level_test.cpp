@@ -3,8 +3,12 @@
 // accounts for the obstacles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <numbers>
+#include <vector>
 
 #include "bench/water_level.h"
 #include "sph/params.h"
@@ -14,23 +18,25 @@ namespace {
 // A box `cells` spacings square and 1 m high, with `layers` layers of `size_class` particles on
 // a cubic lattice at rest density (the spacing cbrt(m / rho0)), squeezed vertically by `squeeze`.
 struct Pool {
-  sph::Boundary boundary;
+  sph::Scene scene;  // the pbf preset's parameters, the box as its boundary
   sph::BoxState box;
   sph::ParticleSet particles{40000};
   double spacing = 0.0;
   double rest_density = 0.0;
+
+  bench::WaterLevel level() const { return bench::measureWaterLevel(particles, scene, box); }
 };
 
 Pool latticePool(sph::SizeClass size_class, int cells, int layers, double squeeze = 1.0) {
   Pool pool;
-  sph::SimParams params;
+  sph::SimParams& params = pool.scene.params;
   EXPECT_TRUE(sph::presetByName("pbf", params));
   pool.rest_density = params.rest_density;
   const sph::SizeClassProps props = params.classes()[sph::classIndex(size_class)];
   pool.spacing = std::cbrt(props.mass / params.rest_density);
   const double side = cells * pool.spacing;
-  pool.boundary.box.max = Eigen::Vector3d(side, 1.0, side);
-  pool.box = pool.boundary.stateAt(0.0);
+  pool.scene.boundary.box.max = Eigen::Vector3d(side, 1.0, side);
+  pool.box = pool.scene.boundary.stateAt(0.0);
   for (int y = 0; y < layers; ++y) {
     for (int z = 0; z < cells; ++z) {
       for (int x = 0; x < cells; ++x) {
@@ -47,8 +53,7 @@ Pool latticePool(sph::SizeClass size_class, int cells, int layers, double squeez
 TEST(WaterLevel, ALatticeAtRestDensityReadsItsOwnDepth) {
   for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
     const Pool pool = latticePool(c, 24, 10);
-    const bench::WaterLevel level =
-        bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+    const bench::WaterLevel level = pool.level();
     const double depth = 10 * pool.spacing;
     std::printf("class %d: level %.5f m, lattice %.5f m, incompressible %.5f m, %d of %d gauges wet\n",
                 static_cast<int>(c), level.depth, depth, level.incompressible_depth, level.wet, level.gauges);
@@ -69,14 +74,43 @@ TEST(WaterLevel, DisorderedWaterReadsItsDepth) {
     return static_cast<float>((static_cast<double>(state >> 8) / (1 << 24) - 0.5) * 0.6 * pool.spacing);
   };
   for (sph::Vec3& x : pool.particles.position) x += sph::Vec3(offset(), offset(), offset());
-  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  const bench::WaterLevel level = pool.level();
+  EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
+}
+
+// A sheet thinner than a support reads its depth: the floor's share of the kernel counts, as the
+// solvers count it (boundary_volume.h), so the sheet's top reads like the top of deep water.
+TEST(WaterLevel, ASheetOneOrTwoLayersDeepReadsItsDepth) {
+  for (const int layers : {1, 2}) {
+    const Pool pool = latticePool(sph::SizeClass::Small, 24, layers);
+    const bench::WaterLevel level = pool.level();
+    std::printf("%d layers: level %.5f m against %.5f m\n", layers, level.depth, level.incompressible_depth);
+    EXPECT_EQ(level.wet, level.gauges);
+    EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
+  }
+}
+
+// Water piled against one wall (a wave running into it) reads its volume: the gauges reach the
+// walls, the wall's share of their kernel divided out.
+TEST(WaterLevel, WaterPiledAgainstAWallReadsItsVolume) {
+  Pool pool = latticePool(sph::SizeClass::Small, 24, 12);
+  std::vector<std::uint8_t> keep(pool.particles.size());
+  for (std::size_t i = 0; i < keep.size(); ++i) {  // 12 layers at the wall down to 6 from the 7th column on
+    const sph::Vec3& x = pool.particles.position[i];
+    const long column = std::lround(x.x() / pool.spacing - 0.5);
+    const long layer = std::lround(x.y() / pool.spacing - 0.5);
+    keep[i] = layer < 6 + std::max(0L, 6 - column);
+  }
+  pool.particles.compact(keep);
+  const bench::WaterLevel level = pool.level();
+  std::printf("piled: level %.5f m against %.5f m\n", level.depth, level.incompressible_depth);
   EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
 }
 
 // Water squeezed 2 % reads 2 % lower, where its sum m / rho0 fills the same depth as before.
 TEST(WaterLevel, SqueezedWaterReadsLower) {
   const Pool pool = latticePool(sph::SizeClass::Small, 24, 10, 0.98);
-  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  const bench::WaterLevel level = pool.level();
   EXPECT_NEAR(level.depth / level.incompressible_depth, 0.98, 0.004);
 }
 
@@ -102,7 +136,7 @@ TEST(WaterLevel, LayersOfBothClassesReadTheirJointDepth) {
       }
     }
   }
-  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  const bench::WaterLevel level = pool.level();
   EXPECT_NEAR(level.incompressible_depth, floor_of_small + 6 * up, 1e-5);
   EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
 }
@@ -114,7 +148,7 @@ TEST(WaterLevel, GaugesOverDryFloorReadNothing) {
   std::vector<std::uint8_t> keep(pool.particles.size());
   for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = pool.particles.position[i].x() < half;
   pool.particles.compact(keep);
-  const bench::WaterLevel level = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density);
+  const bench::WaterLevel level = pool.level();
   EXPECT_GT(level.wet, level.gauges * 2 / 5);
   EXPECT_LE(level.wet, level.gauges * 3 / 5);
   EXPECT_LT(level.depth, 0.6 * 6 * pool.spacing);
@@ -143,13 +177,13 @@ TEST(WaterLevel, IncompressibleDepthLeavesOutTheObstacles) {
   EXPECT_NEAR(bench::incompressibleDepth(0.5, beyond, box), 0.5, 1e-9);
 }
 
-// A gauge stands clear of the walls and the obstacles by the largest support.
+// No gauge stands on an obstacle.
 TEST(WaterLevel, GaugesStayClearOfObstacles) {
   Pool pool = latticePool(sph::SizeClass::Small, 24, 4);
-  const int open = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density).gauges;
+  const int open = pool.level().gauges;
   const double centre = pool.box.max.x() / 2.0;
-  pool.boundary.cylinders.push_back({centre, centre, 0.05});
-  const int around = bench::measureWaterLevel(pool.particles, pool.boundary, pool.box, pool.rest_density).gauges;
+  pool.scene.boundary.cylinders.push_back({centre, centre, 0.05});
+  const int around = pool.level().gauges;
   EXPECT_LT(around, open);
   EXPECT_GT(around, 0);
 }
