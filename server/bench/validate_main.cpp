@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "bench/bench_run.h"
 #include "bench/validation.h"
@@ -156,6 +157,19 @@ void writeRestProfiles(const std::vector<std::pair<std::string, bench::RestProfi
   }
 }
 
+// A surge-front curve's gnuplot style: one colour per preset, one dash pattern per method, so
+// nine curves that nearly coincide can still be told apart.
+std::string curveStyle(const std::string& preset, const std::string& method) {
+  std::string style;
+  if (preset == "pbf") style += " lc rgb '#0072b2'";
+  if (preset == "dfsph") style += " lc rgb '#d55e00'";
+  if (preset == "thesis") style += " lc rgb '#808080'";
+  if (method == "surface") style += " dt 2";
+  if (method == "gaze") style += " dt 3";
+  if (method == "hybrid") style += " dt 4";
+  return style;
+}
+
 // PNGs through gnuplot (scripts/install_deps.sh installs it); skipped with a note when missing.
 void plot(const std::vector<FrontRun>& runs, const std::vector<std::string>& presets, const fs::path& dir) {
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
@@ -171,7 +185,8 @@ void plot(const std::vector<FrontRun>& runs, const std::vector<std::string>& pre
      << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin \\& Moyce 1952'";
   for (const FrontRun& r : runs) {
     gp << ", '" << (dir / "surge_front.csv").string() << "' using ((strcol(1) eq '" << r.preset << "' && strcol(2) eq '"
-       << r.method << "') ? $3 : NaN):4 with lines lw 2 title '" << r.preset << " " << r.method << "'";
+       << r.method << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, r.method) << " title '" << r.preset
+       << " " << r.method << "'";
   }
   gp << "\nset output '" << (dir / "hydrostatic.png").string() << "'\nset multiplot layout 1,2\n"
      << "set title 'Density against depth'\nset xlabel 'rho / rho0'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"

@@ -107,6 +107,35 @@ TEST(WaterLevel, WaterPiledAgainstAWallReadsItsVolume) {
   EXPECT_NEAR(level.depth / level.incompressible_depth, 1.0, 0.005);
 }
 
+// Water round a floor-to-roof cylinder and round a sphere that stands out of it (the dam break's
+// obstacles) reads its depth: the gauges beside them divide out the obstacle's share of their
+// kernel, and the depth the mass fills leaves the obstacles' volume out.
+TEST(WaterLevel, WaterRoundObstaclesReadsItsDepth) {
+  for (const bool sphere : {false, true}) {
+    Pool pool = latticePool(sph::SizeClass::Small, 36, 10);
+    const double centre = pool.box.max.x() / 2.0;
+    const Eigen::Vector3d at(centre, 0.0, centre);
+    const double radius = (sphere ? 14.0 : 5.0) * pool.spacing;
+    if (sphere) {
+      pool.scene.boundary.spheres.push_back({at, radius});
+    } else {
+      pool.scene.boundary.cylinders.push_back({centre, centre, radius});
+    }
+    std::vector<std::uint8_t> keep(pool.particles.size());
+    for (std::size_t i = 0; i < keep.size(); ++i) {  // the lattice's cells whose centre the obstacle leaves free
+      const sph::Vec3& x = pool.particles.position[i];
+      const double y = sphere ? x.y() : 0.0;
+      keep[i] = std::hypot(x.x() - centre, y, x.z() - centre) > radius;
+    }
+    pool.particles.compact(keep);
+    const bench::WaterLevel level = pool.level();
+    std::printf("%s: level %.5f m against %.5f m (lattice %.5f m), %d gauges\n", sphere ? "sphere" : "cylinder",
+                level.depth, level.incompressible_depth, 10 * pool.spacing, level.gauges);
+    EXPECT_NEAR(level.depth / (10 * pool.spacing), 1.0, 0.005);
+    EXPECT_NEAR(level.incompressible_depth / (10 * pool.spacing), 1.0, 0.005);
+  }
+}
+
 // Water squeezed 2 % reads 2 % lower, where its sum m / rho0 fills the same depth as before.
 TEST(WaterLevel, SqueezedWaterReadsLower) {
   const Pool pool = latticePool(sph::SizeClass::Small, 24, 10, 0.98);
