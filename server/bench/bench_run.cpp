@@ -70,6 +70,7 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   r.substeps = solver.substeps;
   r.solver_iterations = solver.iterations;
   r.divergence_iterations = solver.divergence_iterations;
+  r.placement_iterations = solver.placement_iterations;
 }
 
 SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const RunOptions& options) : options_(options) {

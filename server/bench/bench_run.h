@@ -30,6 +30,7 @@ struct FrameRecord {
   int substeps = 1;        // solver steps in the frame (SolverStats)
   int solver_iterations = 0;
   int divergence_iterations = 0;
+  int placement_iterations = 0;
   std::size_t nan_values = 0;
   std::size_t outside_box = 0;
   int splits = 0;  // adaptive step of this frame

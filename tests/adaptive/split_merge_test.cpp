@@ -179,6 +179,7 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
     return most - 1.0f;
   };
   for (int s = 0; s < bounds.settle_frames; ++s) sim.step();
+  EXPECT_EQ(sim.lastSolverStats().placement_iterations, 0);  // nothing placed since the start
   const double rest = rms();
   const float compression_before = maxCompression();
 
@@ -188,6 +189,8 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   sph::applySplitMerge(sim, std::vector<std::int8_t>(n, sph::kSplit), std::vector<std::int32_t>(n, -1), keep, slots);
   ASSERT_EQ(sim.particles().size(), 2 * n);
   sim.step();
+  // The children's placement is counted apart from the solver's own iterations.
+  EXPECT_GT(sim.lastSolverStats().placement_iterations, 0);
   const double after_split = rms();
   std::printf("rms %.4f -> %.4f m/s in the split step; max compression %.4f -> %.4f\n", rest, after_split,
               compression_before, maxCompression());

@@ -124,7 +124,7 @@ void DfsphSolver::placeFresh(const FrameContext& frame) {
   a.only = nullptr;
   a.only_count = 0;
   std::fill(place_lambda_.begin(), place_lambda_.end(), 0.0f);
-  frame.stats.iterations +=
+  frame.stats.placement_iterations +=
       placement_.place(p, frame.grid, a, placement_constants_, forms, density_at_start_, place_next_position_,
                        kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);

@@ -28,8 +28,9 @@ struct PhaseTimings {
 // What a solver did in one frame.
 struct SolverStats {
   int substeps = 1;
-  int iterations = 0;             // pressure iterations over the substeps (pbf, dfsph; placement ones too)
+  int iterations = 0;             // pressure iterations over the substeps (pbf, dfsph)
   int divergence_iterations = 0;  // dfsph
+  int placement_iterations = 0;   // moving the adaptive step's fresh particles apart (local_placement.h)
   float density_error = 0.0f;     // mean max(rho / rho0 - 1, 0) after the last solve (pbf, dfsph)
 };
 

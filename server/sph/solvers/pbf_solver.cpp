@@ -169,8 +169,9 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
     ++iterations;
   }
   frame.stats.iterations += iterations;
-  frame.stats.iterations += placement_.place(p, frame.grid, a, constants_, forms, density_at_start_, next_position_,
-                                             kPlacedCompression * constants_.rest_density, kPlacedIterations);
+  frame.stats.placement_iterations +=
+      placement_.place(p, frame.grid, a, constants_, forms, density_at_start_, next_position_,
+                       kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);
 
   // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22). A particle
