@@ -48,14 +48,23 @@ void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out) {
                                 std::to_string(out.capacity()));
   }
   out.clear();
-  // y outermost so that the lowest layers fill first.
-  for (int y = 0; y < cells[1] && static_cast<int>(out.size()) < count; ++y) {
-    for (int z = 0; z < cells[2] && static_cast<int>(out.size()) < count; ++z) {
-      for (int x = 0; x < cells[0] && static_cast<int>(out.size()) < count; ++x) {
-        const Eigen::Vector3d p =
-            scene.water.min + Eigen::Vector3d(inset + x * spacing, inset + y * spacing, inset + z * spacing);
-        out.add(p.cast<float>(), Vec3::Zero(), start_class, props);
-      }
+  // The lowest layers full, and the particles left over for the top layer spread evenly over its
+  // cells (every cell whose share of them, in row order, reaches a new whole): filled row by row
+  // they would cover one side of the footprint, a step in the surface a spacing high that sets the
+  // water sloshing as soon as it moves (the dam break's held column, pbf: 0.046 m/s rms after 25
+  // frames, the whole column moving towards the unfilled side).
+  const long per_layer = static_cast<long>(cells[0]) * cells[2];
+  const long full_layers = per_layer > 0 ? count / per_layer : 0;
+  const long top = count - full_layers * per_layer;
+  for (long y = 0; y <= full_layers && y < cells[1]; ++y) {
+    for (long c = 0; c < per_layer; ++c) {
+      if (y == full_layers && (c + 1) * top / per_layer == c * top / per_layer) continue;
+      const long z = c / cells[0];
+      const long x = c % cells[0];
+      const Eigen::Vector3d p = scene.water.min + Eigen::Vector3d(inset + static_cast<double>(x) * spacing,
+                                                                  inset + static_cast<double>(y) * spacing,
+                                                                  inset + static_cast<double>(z) * spacing);
+      out.add(p.cast<float>(), Vec3::Zero(), start_class, props);
     }
   }
   const BoxState box = scene.boundary.stateAt(0.0);

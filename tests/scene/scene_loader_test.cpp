@@ -1,10 +1,12 @@
 // Scene files: the five shipped scenes load; bad files fail with the file and key named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "scene/scene_loader.h"
+#include "sph/params.h"
 #include "sph/particles.h"
 
 namespace {
@@ -44,6 +46,31 @@ TEST(SceneLoader, ShippedScenesLoadAndFill) {
     EXPECT_EQ(large_set.size(), 10000u) << name;
     // The same water mass either way.
     EXPECT_NEAR(small_set.totalMass(), large_set.totalMass(), 1e-3) << name;
+  }
+}
+
+// The particles left over for the top layer spread over the whole footprint: a partial layer
+// filled row by row covered one side of it, a step in the surface that set the water sloshing.
+TEST(SceneLoader, FillSpreadsTheTopLayerOverTheFootprint) {
+  for (const char* preset : {"thesis", "pbf"}) {
+    sph::Scene s = scene::loadScene("dambreak");
+    ASSERT_TRUE(sph::presetByName(preset, s.params));
+    for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
+      sph::ParticleSet p;
+      sph::fillWater(s, c, p);
+      float top = 0.0f;
+      for (const sph::Vec3& x : p.position) top = std::max(top, x.y());
+      const auto centre = (s.water.min + s.water.max).cast<float>() / 2.0f;
+      int quadrant[4] = {};
+      int in_top = 0;
+      for (const sph::Vec3& x : p.position) {
+        if (x.y() < top - 1e-4f) continue;
+        ++in_top;
+        ++quadrant[(x.x() < centre.x() ? 0 : 1) + (x.z() < centre.z() ? 0 : 2)];
+      }
+      ASSERT_GT(in_top, 40) << preset;
+      for (const int q : quadrant) EXPECT_NEAR(q, in_top / 4.0, 0.05 * in_top) << preset << " " << in_top;
+    }
   }
 }
 
