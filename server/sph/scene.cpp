@@ -51,8 +51,8 @@ void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out) {
   // The lowest layers full, and the particles left over for the top layer spread evenly over its
   // cells (every cell whose share of them, in row order, reaches a new whole): filled row by row
   // they would cover one side of the footprint, a step in the surface a spacing high that sets the
-  // water sloshing as soon as it moves (the dam break's held column, pbf: 0.046 m/s rms after 25
-  // frames, the whole column moving towards the unfilled side).
+  // water sloshing towards the bare side as soon as it moves (docs/fluids.md, "Water starts at
+  // rest").
   const long per_layer = static_cast<long>(cells[0]) * cells[2];
   const long full_layers = per_layer > 0 ? count / per_layer : 0;
   const long top = count - full_layers * per_layer;
