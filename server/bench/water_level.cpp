@@ -1,13 +1,14 @@
 #include "bench/water_level.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "sph/boundary_volume.h"
 #include "sph/kernels.h"
+#include "sph/solvers/incompressible_setup.h"
 
 namespace bench {
 namespace {
@@ -27,10 +28,11 @@ struct Candidate {
 // the water and above it too, so adding it would count wall above the surface as water: it divides
 // out instead, the water's sum taken over the part of the kernel the wall leaves to it.
 struct Walls {
-  sph::BoundaryVolume floor;
-  sph::BoundaryVolume sides;
-  sph::BoxState floor_only;  // the box's floor, its other faces out of reach
-  sph::BoxState sides_only;  // its side faces, floor and roof out of reach
+  sph::IncompressibleSetup setup;  // the solvers' own: each class's kernel and spacing, and the walls
+  sph::BoundaryVolume floor;       // the floor alone, with the setup's kernels and spacings
+  sph::BoxState floor_only;        // the box's floor, its other faces out of reach
+  sph::BoxState sides_only;        // its side faces, floor and roof out of reach
+  const sph::BoundaryVolume& sides() const { return *setup.boundary; }
 };
 
 sph::Boundary boxAlone(const sph::Boundary& boundary) {
@@ -40,16 +42,10 @@ sph::Boundary boxAlone(const sph::Boundary& boundary) {
 }
 
 Walls wallsOf(const sph::Scene& scene, const sph::BoxState& box) {
-  const auto classes = scene.params.classes();
-  std::array<sph::CubicKernel, sph::kSizeClassCount> kernels;
-  std::array<float, sph::kSizeClassCount> spacing{};
-  for (std::size_t c = 0; c < kernels.size(); ++c) {
-    kernels[c] = sph::CubicKernel::forSupport(static_cast<float>(classes[c].support));
-    spacing[c] = static_cast<float>(std::cbrt(classes[c].mass / scene.params.rest_density));
-  }
+  sph::IncompressibleSetup setup = sph::makeIncompressibleSetup(scene);
+  sph::BoundaryVolume floor(boxAlone(scene.boundary), setup.kernels.classes, setup.spacing);
   constexpr float kFar = 1e6f;  // metres: beyond any kernel's reach
-  Walls walls{sph::BoundaryVolume(boxAlone(scene.boundary), kernels, spacing),
-              sph::BoundaryVolume(scene.boundary, kernels, spacing), box, box};
+  Walls walls{std::move(setup), std::move(floor), box, box};
   walls.floor_only.min.x() = walls.floor_only.min.z() = -kFar;
   walls.floor_only.max = sph::Vec3(kFar, kFar, kFar);
   walls.sides_only.min.y() = -kFar;
@@ -88,7 +84,7 @@ double densityAt(const Gauge& g, double y) {
     if (by_class[c] <= 0.0) continue;
     const double share = by_class[c] / water;
     floor_phi += share * g.walls->floor.sample(at, c, g.walls->floor_only).phi;
-    sides_phi += share * g.walls->sides.sample(at, c, g.walls->sides_only).phi;
+    sides_phi += share * g.walls->sides().sample(at, c, g.walls->sides_only).phi;
   }
   // A gauge stands at least half a SMALL spacing off every side wall and obstacle, where a side's
   // Phi stays under a half (measureWaterLevel); the bound only keeps the quotient finite.
@@ -185,8 +181,7 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene,
   if (p.empty() || reach <= 0.0) return out;
   const Walls walls = wallsOf(scene, box);
   // Half a SMALL spacing: where a wall layer's particle stands, its line clear of any solid.
-  const auto classes = scene.params.classes();
-  const double half_spacing = 0.5 * std::cbrt(classes[sph::classIndex(sph::SizeClass::Small)].mass / rest_density);
+  const double half_spacing = 0.5 * walls.setup.spacing[sph::classIndex(sph::SizeClass::Small)];
 
   // The particles binned into columns of the largest support, so a gauge reads 3 x 3 columns.
   const double x0 = box.min.x();
