@@ -18,7 +18,7 @@ struct Candidate {
   double y;
   double horizontal_sq;  // squared distance from the line
   double mass;
-  sph::CubicKernel kernel;  // of the particle's own support
+  const sph::CubicKernel* kernel;  // its class's (the setup's: every particle of a class has its support)
   int class_index;
 };
 
@@ -71,8 +71,8 @@ double densityAt(const Gauge& g, double y) {
   for (const Candidate& c : *g.near) {
     const double dy = y - c.y;
     const double r_sq = c.horizontal_sq + dy * dy;
-    if (r_sq >= static_cast<double>(c.kernel.h) * c.kernel.h) continue;
-    by_class[c.class_index] += c.mass * sph::cubicW(c.kernel, static_cast<float>(std::sqrt(r_sq)));
+    if (r_sq >= static_cast<double>(c.kernel->h) * c.kernel->h) continue;
+    by_class[c.class_index] += c.mass * sph::cubicW(*c.kernel, static_cast<float>(std::sqrt(r_sq)));
   }
   double water = 0.0;
   for (double d : by_class) water += d;
@@ -96,7 +96,7 @@ double densityAt(const Gauge& g, double y) {
 // floor's height when it never does (a dry gauge).
 double levelOf(const Gauge& g, double floor, double step, double half) {
   double top = floor;
-  for (const Candidate& c : *g.near) top = std::max(top, c.y + c.kernel.h);
+  for (const Candidate& c : *g.near) top = std::max(top, c.y + c.kernel->h);
   double above = top;
   double y = top - step;
   while (y > floor && densityAt(g, y) < half) {
@@ -220,8 +220,9 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene,
             const double hz = p.position[i].z() - gauge.z;
             const double h_sq = hx * hx + hz * hz;
             if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::CubicKernel::forSupport(p.support[i]),
-                              sph::classIndex(p.size_class[i])});
+              const int c = sph::classIndex(p.size_class[i]);
+              near.push_back(
+                  {p.position[i].y(), h_sq, p.mass[i], &walls.setup.kernels[static_cast<std::size_t>(c)], c});
             }
           }
         }
