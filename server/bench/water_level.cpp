@@ -18,8 +18,7 @@ struct Candidate {
   double y;
   double horizontal_sq;  // squared distance from the line
   double mass;
-  const sph::CubicKernel* kernel;  // its class's (the setup's: every particle of a class has its support)
-  int class_index;
+  int class_index;  // its kernel: the setup's of its class (every particle of a class has its support)
 };
 
 // The walls' volume (boundary_volume.h) in two parts: the floor alone, and the side walls with the
@@ -33,6 +32,7 @@ struct Walls {
   sph::BoxState floor_only;        // the box's floor, its other faces out of reach
   sph::BoxState sides_only;        // its side faces, floor and roof out of reach
   const sph::BoundaryVolume& sides() const { return *setup.boundary; }
+  const sph::CubicKernel& kernel(int class_index) const { return setup.kernels[static_cast<std::size_t>(class_index)]; }
 };
 
 sph::Boundary boxAlone(const sph::Boundary& boundary) {
@@ -69,10 +69,11 @@ struct Gauge {
 double densityAt(const Gauge& g, double y) {
   double by_class[sph::kSizeClassCount] = {};
   for (const Candidate& c : *g.near) {
+    const sph::CubicKernel& kernel = g.walls->kernel(c.class_index);
     const double dy = y - c.y;
     const double r_sq = c.horizontal_sq + dy * dy;
-    if (r_sq >= static_cast<double>(c.kernel->h) * c.kernel->h) continue;
-    by_class[c.class_index] += c.mass * sph::cubicW(*c.kernel, static_cast<float>(std::sqrt(r_sq)));
+    if (r_sq >= static_cast<double>(kernel.h) * kernel.h) continue;
+    by_class[c.class_index] += c.mass * sph::cubicW(kernel, static_cast<float>(std::sqrt(r_sq)));
   }
   double water = 0.0;
   for (double d : by_class) water += d;
@@ -96,7 +97,7 @@ double densityAt(const Gauge& g, double y) {
 // floor's height when it never does (a dry gauge).
 double levelOf(const Gauge& g, double floor, double step, double half) {
   double top = floor;
-  for (const Candidate& c : *g.near) top = std::max(top, c.y + c.kernel->h);
+  for (const Candidate& c : *g.near) top = std::max(top, c.y + g.walls->kernel(c.class_index).h);
   double above = top;
   double y = top - step;
   while (y > floor && densityAt(g, y) < half) {
@@ -220,9 +221,7 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene,
             const double hz = p.position[i].z() - gauge.z;
             const double h_sq = hx * hx + hz * hz;
             if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-              const int c = sph::classIndex(p.size_class[i]);
-              near.push_back(
-                  {p.position[i].y(), h_sq, p.mass[i], &walls.setup.kernels[static_cast<std::size_t>(c)], c});
+              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::classIndex(p.size_class[i])});
             }
           }
         }
