@@ -101,9 +101,9 @@ TEST(SceneLoader, PbfIterationBoundsAreReadAndChecked) {
 }
 
 TEST(SceneLoader, DfsphSolveChoiceIsReadAndChecked) {
-  EXPECT_FALSE(scene::parseScene(withKey(R"("preset": "dfsph")"), "t").params.conjugate_gradients);
-  EXPECT_TRUE(scene::parseScene(withKey(R"("preset": "dfsph", "params": {"conjugate_gradients": true})"), "t")
-                  .params.conjugate_gradients);
+  EXPECT_TRUE(scene::parseScene(withKey(R"("preset": "dfsph")"), "t").params.conjugate_gradients);
+  EXPECT_FALSE(scene::parseScene(withKey(R"("preset": "dfsph", "params": {"conjugate_gradients": false})"), "t")
+                   .params.conjugate_gradients);
   EXPECT_NE(errorOf(withKey(R"("params": {"conjugate_gradients": "no"})")).find("params.conjugate_gradients"),
             std::string::npos);
 }

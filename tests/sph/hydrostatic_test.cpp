@@ -93,8 +93,10 @@ double rmsSpeed(const sph::ParticleSet& p) {
 }
 
 // 10 x 10 spacings, 14 layers deep (1,400 particles, 0.3 m of water), settled: at least 2 s, then
-// until the rms speed is below 5 mm/s, for at most 8 s of simulated time (the scalar and the
-// AVX-512 forms round differently and settle up to a second apart), and measured 1 s after that.
+// until the rms speed is below 3 mm/s, for at most 8 s of simulated time (the scalar and the
+// AVX-512 forms round differently and settle up to a second apart), and measured 1 s after that,
+// where it must still be below the 5 mm/s asked. (dfsph's conjugate gradients pass 5 mm/s at
+// about 2.3 s and read 4.6 mm/s a second later; 2.3 from 4.5 s on.)
 // One thread: the result is the same on any count (below), and a small set on two threads of a
 // busy machine spends its time waiting at the barriers.
 void expectRest(const std::string& preset) {
@@ -102,7 +104,7 @@ void expectRest(const std::string& preset) {
   omp_set_num_threads(1);
   sph::Simulation sim(tank(preset, 10, 14), sph::SizeClass::Small);
   ASSERT_EQ(sim.particles().size(), 1400u);
-  for (int f = 0; f < 800 && (f < 200 || rmsSpeed(sim.particles()) >= 5e-3); ++f) sim.step();
+  for (int f = 0; f < 800 && (f < 200 || rmsSpeed(sim.particles()) >= 3e-3); ++f) sim.step();
   std::printf("%s: settled at t = %.2f s\n", preset.c_str(), sim.time());
   // Then it must stay at rest: the measurement is a second later.
   for (int f = 0; f < 100; ++f) sim.step();
@@ -171,9 +173,10 @@ TEST(Hydrostatic, PbfIteratesDeepWaterToItsTolerance) {
   EXPECT_LT(sunk[0], sunk[1] - 0.005);
 }
 
-// dfsph's constant-density solve may turn to conjugate gradients after three Jacobi iterations
-// (dfsph_conjugate_gradients.cpp): in a tank 24 layers deep (8 x 8 spacings, 1,536 particles) it
-// must reach the same tolerance in fewer iterations than Jacobi throughout (a quarter of them, 34
+// dfsph's constant-density solve turns to conjugate gradients after three Jacobi iterations
+// (dfsph_conjugate_gradients.cpp; the preset's, "conjugate_gradients": false keeps Jacobi): in a
+// tank 24 layers deep (8 x 8 spacings, 1,536 particles) it must reach the same tolerance in fewer
+// iterations than Jacobi throughout (a quarter of them, 34
 // a frame against 130), leave the water as near rho0 and moving no faster (still settling at
 // 1.5 s, 0.013-0.018 m/s both ways), and give the same particles on 1 and 2 threads (its step
 // lengths are sums in a fixed order). Measured over frames 100-150.
@@ -187,7 +190,7 @@ TEST(Hydrostatic, DfsphConjugateGradientsReachTheToleranceInFewerIterations) {
   for (int run = 0; run < 3; ++run) {
     omp_set_num_threads(run == 2 ? 2 : 1);
     sph::Scene scene = tank("dfsph", 8, 24);
-    EXPECT_FALSE(scene.params.conjugate_gradients);  // the preset's
+    EXPECT_TRUE(scene.params.conjugate_gradients);  // the preset's
     scene.params.conjugate_gradients = run != 1;
     sph::Simulation sim(scene, sph::SizeClass::Small);
     ASSERT_EQ(sim.particles().size(), 1536u);
