@@ -158,8 +158,10 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   const float large_radius = static_cast<float>(large.radius);
 
   // Split, eqs. (3.37)-(3.39), every attribute by its rule (particle_attributes.h); the children
-  // sit at +- half the parent radius along the split direction, so the centre of mass stays put
-  // and the pair spacing is close to the SMALL lattice spacing.
+  // sit at +- half the parent radius along the split direction, so the centre of mass stays put.
+  // They are then 0.78 SMALL lattice spacings apart (r = 0.62 spacings, eq. 3.7; a LARGE spacing
+  // is 1.26 SMALL ones), closer than a lattice's neighbours: the incompressible solvers then move
+  // the fresh particles apart by position (local_placement.h).
   if (splits > 0) {
     // Only the splitting particles, in small chunks: they cluster in index ranges.
 #pragma omp parallel for schedule(dynamic, 32)
