@@ -157,8 +157,8 @@ SimParams dfsphPreset() {
   p.xsph_viscosity = 0.05;
   p.divergence_tolerance = 3e-4;
   // Conjugate gradients past the first Jacobi iterations: the validation tank comes to rest
-  // (Jacobi holds it at about 5 mm/s, where each step's leftover compression stirs it) and the
-  // held dam-break column takes half the iterations (docs/fluids.md).
+  // (under Jacobi alone its interior kept stirring at about 5 mm/s) and the held dam-break
+  // column takes half the iterations (docs/fluids.md).
   p.conjugate_gradients = true;
   return p;
 }

@@ -176,10 +176,10 @@ TEST(Hydrostatic, PbfIteratesDeepWaterToItsTolerance) {
 // dfsph's constant-density solve turns to conjugate gradients after three Jacobi iterations
 // (dfsph_conjugate_gradients.cpp; the preset's, "conjugate_gradients": false keeps Jacobi): in a
 // tank 24 layers deep (8 x 8 spacings, 1,536 particles) it must reach the same tolerance in fewer
-// iterations than Jacobi throughout (a quarter of them, 34
-// a frame against 130), leave the water as near rho0 and moving no faster (still settling at
-// 1.5 s, 0.013-0.018 m/s both ways), and give the same particles on 1 and 2 threads (its step
-// lengths are sums in a fixed order). Measured over frames 100-150.
+// iterations than Jacobi throughout (a third of them, 34 a frame against 97-100), leave the water
+// as near rho0 and moving no faster (still settling at 1.5 s, 0.011-0.015 m/s both ways), and
+// give the same particles on 1 and 2 threads (its step lengths are sums in a fixed order).
+// Measured over frames 100-150.
 TEST(Hydrostatic, DfsphConjugateGradientsReachTheToleranceInFewerIterations) {
   const int previous = omp_get_max_threads();
   long iterations[3] = {0, 0, 0};
