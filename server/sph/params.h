@@ -75,7 +75,7 @@ struct SimParams {
   double divergence_tolerance = 1e-3;  // dfsph: mean |d rho / dt| / rho0 * dt the divergence solver stops at
   int max_iterations = 100;            // dfsph: per solver, per step
   // dfsph: the constant-density solve turns from Jacobi to conjugate gradients after its first
-  // three iterations (dfsph_conjugate_gradients.cpp): a quarter to half the iterations in deep
+  // three iterations (dfsph_conjugate_gradients.cpp): a third to half the iterations in deep
   // or resting water; a small tank at rest keeps moving at 2-3 mm/s where Jacobi brings it under
   // 1, a wide one moves less than under Jacobi (docs/fluids.md). On in dfsph's preset.
   bool conjugate_gradients = false;
