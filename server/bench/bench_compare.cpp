@@ -28,9 +28,17 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
     addUnique(scenes, r.run.scene);
     addUnique(methods, r.run.method);
   }
-  const auto find = [&](const std::string& scene, const std::string& method) -> const RunSummary* {
+  const auto presetsOf = [&](const std::string& scene) {
+    std::vector<std::string> presets;
     for (const auto& r : runs) {
-      if (r.run.scene == scene && r.run.method == method) return &r;
+      if (r.run.scene == scene) addUnique(presets, r.run.preset);
+    }
+    return presets;
+  };
+  const auto find = [&](const std::string& scene, const std::string& preset,
+                        const std::string& method) -> const RunSummary* {
+    for (const auto& r : runs) {
+      if (r.run.scene == scene && r.run.preset == preset && r.run.method == method) return &r;
     }
     return nullptr;
   };
@@ -58,6 +66,7 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
          return t > 0.0 ? fixed(100.0 * r.summary.adaptive.mean / t, 1) + " %" : std::string("-");
        }},
       {"Steps per second", [](const RunSummary& r) { return fixed(r.summary.steps_per_s, 1); }},
+      {"Wall s per simulated s", [](const RunSummary& r) { return fixed(r.summary.wall_per_simulated, 2); }},
       {"Mean LARGE / SMALL",
        [](const RunSummary& r) { return fixed(r.summary.mean_large, 0) + " / " + fixed(r.summary.mean_small, 0); }},
       {"Mean neighbours", [](const RunSummary& r) { return fixed(r.summary.mean_neighbors, 1); }},
@@ -78,40 +87,43 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
       "Mean milliseconds per step and phase; the neighbour search is shown on its own (the thesis "
       "folds it into the density row).\n";
   for (const std::string& scene : scenes) {
-    md += "\n## ";
-    md += scene;
-    md += "\n\n| phase |";
-    for (const auto& m : methods) {
-      md += ' ';
-      md += m;
-      md += " |";
-    }
-    md += "\n|---|";
-    for (std::size_t k = 0; k < methods.size(); ++k) md += "---:|";
-    md += "\n";
-    for (const Row& row : rows) {
-      md += std::string("| ") + row.label + " |";
+    const std::vector<std::string> presets = presetsOf(scene);
+    for (const std::string& preset : presets) {
+      md += "\n## ";
+      md += scene;
+      if (presets.size() > 1) md += ", preset " + preset;
+      md += "\n\n| phase |";
       for (const auto& m : methods) {
-        const RunSummary* r = find(scene, m);
         md += ' ';
-        md += r ? row.value(*r) : std::string("-");
+        md += m;
         md += " |";
       }
+      md += "\n|---|";
+      for (std::size_t k = 0; k < methods.size(); ++k) md += "---:|";
       md += "\n";
-    }
-    const RunSummary* regular = find(scene, "regular");
-    if (regular && regular->summary.total.mean > 0.0) {
-      md += "| Total / regular |";
-      for (const auto& m : methods) {
-        const RunSummary* r = find(scene, m);
-        md += ' ';
-        md += r ? fixed(r->summary.total.mean / regular->summary.total.mean, 2) : std::string("-");
-        md += " |";
+      for (const Row& row : rows) {
+        md += std::string("| ") + row.label + " |";
+        for (const auto& m : methods) {
+          const RunSummary* r = find(scene, preset, m);
+          md += ' ';
+          md += r ? row.value(*r) : std::string("-");
+          md += " |";
+        }
+        md += "\n";
       }
-      md += "\n";
-    }
-    if (!runs.empty()) {
-      const RunSummary* any = find(scene, methods.front());
+      const RunSummary* regular = find(scene, preset, "regular");
+      if (regular && regular->summary.total.mean > 0.0) {
+        md += "| Total / regular |";
+        for (const auto& m : methods) {
+          const RunSummary* r = find(scene, preset, m);
+          md += ' ';
+          md += r ? fixed(r->summary.total.mean / regular->summary.total.mean, 2) : std::string("-");
+          md += " |";
+        }
+        md += "\n";
+      }
+      const RunSummary* any = nullptr;
+      for (const auto& m : methods) any = any ? any : find(scene, preset, m);
       if (any) {
         md += '\n';
         md += std::to_string(any->run.frames);
@@ -125,6 +137,37 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
         md += describe(any->run.machine_load);
         md += ".\n";
       }
+    }
+    if (presets.size() < 2) continue;
+    // The presets took turns in one run (bench_plan.h), so a slow spell of the machine fell on all
+    // of them: their ratio is the figure to compare across runs, not the seconds.
+    md += "\n### ";
+    md += scene;
+    md += ": presets compared\n\nWall-clock seconds per simulated second; in brackets, against ";
+    md += presets.front();
+    md += " in the same run.\n\n| method |";
+    for (const auto& p : presets) md += ' ' + p + " |";
+    md += "\n|---|";
+    for (std::size_t k = 0; k < presets.size(); ++k) md += "---:|";
+    md += "\n";
+    for (const auto& m : methods) {
+      const RunSummary* first = find(scene, presets.front(), m);
+      if (first == nullptr) continue;
+      md += "| " + m + " |";
+      for (const auto& p : presets) {
+        const RunSummary* r = find(scene, p, m);
+        md += ' ';
+        if (r == nullptr) {
+          md += '-';
+        } else {
+          md += fixed(r->summary.wall_per_simulated, 2);
+          if (first->summary.wall_per_simulated > 0.0) {
+            md += " (" + fixed(r->summary.wall_per_simulated / first->summary.wall_per_simulated, 2) + ")";
+          }
+        }
+        md += " |";
+      }
+      md += "\n";
     }
   }
   return md;

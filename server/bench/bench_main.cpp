@@ -1,6 +1,7 @@
 // sph_bench: headless runs of scenes x methods with no sockets; prints and writes the thesis's
 // measurements (4.1): mean ms per phase, steps per second, particle counts, plus health checks.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -36,8 +37,10 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->check(CLI::ExistingFile);
   app.add_option("--frames", request.frames, "frames (steps) to run; 0 = the scene's own count")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--preset", request.preset,
-                 "fluid preset for every scene: thesis, pbf or dfsph (default: each scene's own)")
+  app.add_option("--preset", request.presets,
+                 "fluid preset for every scene: thesis, pbf or dfsph (default: each scene's own); a comma "
+                 "list runs each scene once per preset, taking turns, and compares their cost")
+      ->delimiter(',')
       ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
   app.add_option("--load-state", request.load_state,
                  "continue from this checkpoint (written by --save-state; one scene and method)")
@@ -60,6 +63,13 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->check(CLI::IsMember({"vtu", "vtk", "csv"}))
       ->capture_default_str();
   if (auto code = cli::parse(app, argc, argv)) return code;
+  for (std::size_t k = 0; k < request.presets.size(); ++k) {
+    const auto begin = request.presets.begin();
+    if (std::find(begin, begin + static_cast<std::ptrdiff_t>(k), request.presets[k]) !=
+        begin + static_cast<std::ptrdiff_t>(k)) {
+      return cli::usageError(app, "--preset: " + request.presets[k] + " named twice");
+    }
+  }
   request.export_format = export_format == "csv"   ? bench::SnapshotFormat::Csv
                           : export_format == "vtk" ? bench::SnapshotFormat::Vtk
                                                    : bench::SnapshotFormat::Vtu;
@@ -74,8 +84,9 @@ class ProgressLines {
     auto [it, fresh] = last_.try_emplace(run.dir.string(), now);
     if (!fresh && now - it->second <= std::chrono::seconds(1) && record.frame != frames) return;
     it->second = now;
-    std::fprintf(stderr, "[%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n", run.scene->name.c_str(),
-                 run.method.c_str(), record.frame, frames, record.sim_time, mean_ms, record.n_large + record.n_small);
+    std::fprintf(stderr, "[%s/%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n", run.scene->name.c_str(),
+                 run.scene->params.preset.c_str(), run.method.c_str(), record.frame, frames, record.sim_time, mean_ms,
+                 record.n_large + record.n_small);
   }
 
  private:

@@ -46,6 +46,7 @@ Summary summarize(const RunResult& run) {
   s.adaptive = stats(run, &sph::PhaseTimings::adaptive_ms);
   s.total = stats(run, &sph::PhaseTimings::total_ms);
   s.steps_per_s = s.total.mean > 0.0 ? 1000.0 / s.total.mean : 0.0;
+  s.wall_per_simulated = run.frame_seconds > 0.0 ? s.total.mean / 1000.0 / run.frame_seconds : 0.0;
   const double n = std::max<std::size_t>(run.records.size(), 1);
   for (const FrameRecord& r : run.records) {
     s.mean_large += static_cast<double>(r.n_large) / n;
@@ -77,6 +78,7 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
                  {"adaptive", phaseJson(s.adaptive)},
                  {"total", phaseJson(s.total)}};
   j["steps_per_s"] = s.steps_per_s;
+  j["wall_seconds_per_simulated_second"] = s.wall_per_simulated;
   j["mean_large"] = s.mean_large;
   j["mean_small"] = s.mean_small;
   j["mean_neighbors_per_particle"] = s.mean_neighbors;
@@ -138,15 +140,16 @@ std::string describeVolume(const RunResult& run) {
 std::string summaryText(const RunResult& run, const Summary& s) {
   char buf[2048];
   std::snprintf(buf, sizeof buf,
-                "%s/%s: %d frames, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
-                "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s | "
+                "%s/%s (%s): %d frames, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
+                "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s, "
+                "%.2f wall s per simulated s | "
                 "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
                 "NaN %zu, outside %zu | at the end: %s | other load: %s",
-                run.scene.c_str(), run.method.c_str(), run.frames, run.threads, s.neighbor.mean,
+                run.scene.c_str(), run.method.c_str(), run.preset.c_str(), run.frames, run.threads, s.neighbor.mean,
                 s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean, s.total.p95,
-                s.steps_per_s, s.mean_large, s.mean_small, s.mean_neighbors, s.mean_density_ratio, s.max_density_ratio,
-                run.mass_start, run.mass_end, s.nan_values, s.outside_box, describeVolume(run).c_str(),
-                describe(run.machine_load).c_str());
+                s.steps_per_s, s.wall_per_simulated, s.mean_large, s.mean_small, s.mean_neighbors, s.mean_density_ratio,
+                s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values, s.outside_box,
+                describeVolume(run).c_str(), describe(run.machine_load).c_str());
   return buf;
 }
 

@@ -16,6 +16,9 @@ struct PhaseStats {
 struct Summary {
   PhaseStats neighbor, density_pressure, accel_integrate_collide, adaptive, total;
   double steps_per_s = 0.0;
+  // The steps' wall-clock seconds per simulated second (the simulation's own cost; the bench's
+  // measurements between steps left out): under 1 is faster than real time.
+  double wall_per_simulated = 0.0;
   double mean_large = 0.0, mean_small = 0.0, mean_neighbors = 0.0;
   double mean_density_ratio = 0.0, max_density_ratio = 0.0;
   std::size_t nan_values = 0, outside_box = 0;

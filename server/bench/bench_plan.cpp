@@ -68,7 +68,18 @@ BenchPlan planBench(const BenchRequest& request) {
   std::vector<std::string> methods = request.methods == "all" ? knownMethods() : splitList(request.methods);
   if (scene_names.empty()) throw std::invalid_argument("no scene named (--scene)");
   for (const auto& m : methods) requireKnownMethod(m);
-  for (const auto& s : scene_names) plan.scenes.push_back(scene::loadScene(s, request.scene_dir, request.preset));
+  for (std::size_t k = 0; k < request.presets.size(); ++k) {
+    if (std::find(request.presets.begin(), request.presets.begin() + static_cast<std::ptrdiff_t>(k),
+                  request.presets[k]) != request.presets.begin() + static_cast<std::ptrdiff_t>(k)) {
+      throw std::invalid_argument("preset '" + request.presets[k] + "' named twice (--preset)");
+    }
+  }
+  // Empty: the scene's own preset.
+  const std::vector<std::string> presets = request.presets.empty() ? std::vector<std::string>{""} : request.presets;
+  plan.scenes.reserve(scene_names.size() * presets.size());  // the runs point into it
+  for (const auto& s : scene_names) {
+    for (const auto& preset : presets) plan.scenes.push_back(scene::loadScene(s, request.scene_dir, preset));
+  }
 
   const gaze::GazeRecording* override_gaze = nullptr;
   if (!request.gaze_path.empty()) {
@@ -76,13 +87,16 @@ BenchPlan planBench(const BenchRequest& request) {
     override_gaze = plan.recordings.back().get();
   }
   plan.matrix = plan.scenes.size() * std::max<std::size_t>(methods.size(), 1) > 1;
+  const bool per_preset = presets.size() > 1;
   if (plan.matrix && !(request.load_state.empty() && request.save_state.empty())) {
-    throw std::invalid_argument("--load-state and --save-state need one scene and one method");
+    throw std::invalid_argument("--load-state and --save-state need one scene, one method and one preset");
   }
 
   std::map<std::string, const gaze::GazeRecording*> scene_gaze;
-  for (const sph::Scene& sc : plan.scenes) {
-    std::vector<PlannedRun>& runs = plan.runs.emplace_back();
+  for (std::size_t k = 0; k < plan.scenes.size(); ++k) {
+    const sph::Scene& sc = plan.scenes[k];
+    // A scene's presets go into one group, so that they take turns too.
+    std::vector<PlannedRun>& runs = k % presets.size() == 0 ? plan.runs.emplace_back() : plan.runs.back();
     for (const std::string& method : methods.empty() ? std::vector<std::string>{sc.method} : methods) {
       const gaze::GazeRecording* gaze = nullptr;
       if (methodNeedsGaze(method)) {
@@ -99,8 +113,8 @@ BenchPlan planBench(const BenchRequest& request) {
           gaze = scene_gaze[sc.name] = plan.recordings.back().get();
         }
       }
-      const std::filesystem::path dir = plan.matrix ? std::filesystem::path(request.out_dir) / sc.name / method
-                                                    : std::filesystem::path(request.out_dir);
+      std::filesystem::path dir(request.out_dir);
+      if (plan.matrix) dir = per_preset ? dir / sc.name / sc.params.preset / method : dir / sc.name / method;
       runs.push_back({&sc, method, dir, gaze});
     }
   }

@@ -1,7 +1,8 @@
 // What one sph_bench invocation runs, and the scheduler that runs it: every scene named, each with
-// its methods, loaded and checked before anything runs (a typo fails fast and writes nothing);
-// then one scene at a time, its methods taking turns of a few frames so that a slow spell of the
-// machine falls on all of them alike and their ratios hold.
+// its methods (and, when several are named, once per fluid preset), loaded and checked before
+// anything runs (a typo fails fast and writes nothing); then one scene at a time, its runs taking
+// turns of a few frames so that a slow spell of the machine falls on all of them alike and their
+// ratios hold.
 #pragma once
 
 #include <atomic>
@@ -33,14 +34,16 @@ struct BenchRequest {
   int interleave = 10;  // frames per turn; 0: each method start to end, one after another
   int export_every = 0;
   SnapshotFormat export_format = SnapshotFormat::Vtk;
-  std::string preset;      // thesis, pbf, dfsph, or empty: each scene's own
+  // thesis, pbf, dfsph: each scene runs once per preset named, the presets taking turns like the
+  // methods; none: each scene's own
+  std::vector<std::string> presets;
   std::string load_state;  // a checkpoint to continue from (one scene, one method)
   std::string save_state;  // where to write the checkpoint at the end (one scene, one method)
   // Set (by a signal) to stop early: the runs stop between frames and keep the rows recorded so far.
   const std::atomic<bool>* stop = nullptr;
 };
 
-// One run of the plan: a scene, a method, where its files go and the gaze it replays.
+// One run of the plan: a scene (with its preset), a method, where its files go and the gaze it replays.
 struct PlannedRun {
   const sph::Scene* scene;
   std::string method;
@@ -49,9 +52,11 @@ struct PlannedRun {
 };
 
 struct BenchPlan {
-  std::vector<sph::Scene> scenes;
-  std::vector<std::vector<PlannedRun>> runs;                     // per scene, in the order of `scenes`
-  bool matrix = false;                                           // more than one run: a folder per scene and method
+  std::vector<sph::Scene> scenes;             // one per scene named and preset
+  std::vector<std::vector<PlannedRun>> runs;  // per scene named: its presets' runs, method by method
+  // More than one run: a folder per scene and method (out/scene/method), and per preset when
+  // several are named (out/scene/preset/method).
+  bool matrix = false;
   std::vector<std::unique_ptr<gaze::GazeRecording>> recordings;  // what the runs' gaze points to
 };
 

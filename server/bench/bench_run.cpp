@@ -98,6 +98,7 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   result_.method = method;
   result_.preset = scene.params.preset;
   result_.frames = options.frames > 0 ? options.frames : scene.frames;
+  result_.frame_seconds = scene.params.time_step;
   result_.threads = options.threads;
   result_.omp_wait = process::ompWaitDescription();
   result_.mass_start = sim_->particles().totalMass();

@@ -44,6 +44,7 @@ struct RunResult {
   std::string method;
   std::string preset;
   int frames = 0;
+  double frame_seconds = 0.0;  // simulated time a frame advances (the scene's time_step)
   int threads = 0;
   std::string omp_wait;             // process::ompWaitDescription()
   std::size_t neighbor_stride = 0;  // most entries one neighbour list may hold, at the end

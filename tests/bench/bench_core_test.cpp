@@ -181,4 +181,65 @@ TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
       << md;
 }
 
+// Presets side by side: the same scene and methods, a table each, and their cost against the first.
+TEST(BenchCompare, SeveralPresetsGetATableEachAndTheirCostSideBySide) {
+  std::vector<bench::RunSummary> runs(4);
+  const char* presets[] = {"thesis", "thesis", "dfsph", "dfsph"};
+  const char* methods[] = {"regular", "gaze", "regular", "gaze"};
+  const double cost[] = {0.34, 0.10, 2.38, 0.85};
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    runs[k].run.scene = "dambreak";
+    runs[k].run.preset = presets[k];
+    runs[k].run.method = methods[k];
+    runs[k].summary.total.mean = 10.0 * cost[k];
+    runs[k].summary.wall_per_simulated = cost[k];
+  }
+  const std::string md = bench::comparisonMarkdown(runs);
+  EXPECT_NE(md.find("## dambreak, preset thesis"), std::string::npos) << md;
+  EXPECT_NE(md.find("## dambreak, preset dfsph"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Wall s per simulated s | 2.38 | 0.85 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("### dambreak: presets compared"), std::string::npos) << md;
+  EXPECT_NE(md.find("| method | thesis | dfsph |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| regular | 0.34 (1.00) | 2.38 (7.00) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| gaze | 0.10 (1.00) | 0.85 (8.50) |"), std::string::npos) << md;
+}
+
+// --preset thesis,pbf: each scene once per preset, all its runs in one group (so that they take
+// turns), each in a folder of its own; the runs write what the table compares. A preset named
+// twice is an error before anything runs.
+TEST(BenchPlan, SeveralPresetsRunEachSceneOncePerPresetTakingTurns) {
+  char tmpl[] = "/tmp/bench_plan_XXXXXX";
+  ASSERT_NE(mkdtemp(tmpl), nullptr);
+  const std::filesystem::path dir(tmpl);
+  std::ofstream(dir / "pool.json") << R"({"name": "pool", "box": {"min": [0, 0, 0], "max": [0.3, 0.3, 0.3]},
+             "water": {"min": [0, 0, 0], "max": [0.3, 0.1, 0.3]}, "large_particles": 150, "frames": 2})";
+  bench::BenchRequest request;
+  request.scenes = "pool";
+  request.scene_dir = dir.string();
+  request.methods = "regular,surface";
+  request.presets = {"thesis", "pbf"};
+  request.out_dir = (dir / "out").string();
+  const bench::BenchPlan plan = bench::planBench(request);
+  ASSERT_EQ(plan.scenes.size(), 2u);
+  EXPECT_EQ(plan.scenes[0].params.preset, "thesis");
+  EXPECT_EQ(plan.scenes[1].params.preset, "pbf");
+  ASSERT_EQ(plan.runs.size(), 1u);
+  ASSERT_EQ(plan.runs[0].size(), 4u);
+  EXPECT_EQ(plan.runs[0][0].dir, dir / "out" / "pool" / "thesis" / "regular");
+  EXPECT_EQ(plan.runs[0][3].dir, dir / "out" / "pool" / "pbf" / "surface");
+  EXPECT_EQ(plan.runs[0][3].scene->params.preset, "pbf");
+
+  const auto summaries = bench::runPlan(plan, request, nullptr, nullptr);
+  ASSERT_EQ(summaries.size(), 4u);
+  for (const auto& s : summaries) {
+    EXPECT_GT(s.summary.wall_per_simulated, 0.0) << s.run.preset << '/' << s.run.method;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "pool" / s.run.preset / s.run.method / "summary.json"));
+  }
+  EXPECT_NE(bench::comparisonMarkdown(summaries).find("### pool: presets compared"), std::string::npos);
+
+  request.presets = {"pbf", "pbf"};
+  EXPECT_THROW(bench::planBench(request), std::invalid_argument);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

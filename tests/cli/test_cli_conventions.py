@@ -86,6 +86,7 @@ class UsageErrors(unittest.TestCase):
         self.assert_usage_error("sph_bench", ["--export-format", "obj"], "--export-format", "vtu")
         self.assert_usage_error("sph_server", ["--preset", "water"], "--preset", "water", "pbf", "dfsph", "thesis")
         self.assert_usage_error("sph_bench", ["--preset", "water"], "--preset", "water", "pbf", "dfsph", "thesis")
+        self.assert_usage_error("sph_bench", ["--preset", "pbf,dfsph,pbf"], "--preset", "pbf", "twice")
         self.assert_usage_error("sph_validate", ["--preset", "water"], "--preset", "water", "pbf")
         self.assert_usage_error("sph_viewer", ["--render", "ascii"], "--render", "fluid", "particles")
         self.assert_usage_error("sph_viewer", ["--fov", "abc"], "--fov", "5 to 150")
