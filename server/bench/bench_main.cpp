@@ -1,7 +1,6 @@
 // sph_bench: headless runs of scenes x methods with no sockets; prints and writes the thesis's
 // measurements (4.1): mean ms per phase, steps per second, particle counts, plus health checks.
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -63,12 +62,8 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->check(CLI::IsMember({"vtu", "vtk", "csv"}))
       ->capture_default_str();
   if (auto code = cli::parse(app, argc, argv)) return code;
-  for (std::size_t k = 0; k < request.presets.size(); ++k) {
-    const auto begin = request.presets.begin();
-    if (std::find(begin, begin + static_cast<std::ptrdiff_t>(k), request.presets[k]) !=
-        begin + static_cast<std::ptrdiff_t>(k)) {
-      return cli::usageError(app, "--preset: " + request.presets[k] + " named twice");
-    }
+  if (const std::string twice = bench::firstRepeated(request.presets); !twice.empty()) {
+    return cli::usageError(app, "--preset: " + twice + " named twice");
   }
   request.export_format = export_format == "csv"   ? bench::SnapshotFormat::Csv
                           : export_format == "vtk" ? bench::SnapshotFormat::Vtk

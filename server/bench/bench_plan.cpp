@@ -61,6 +61,13 @@ class SnapshotSeries {
 
 }  // namespace
 
+std::string firstRepeated(const std::vector<std::string>& items) {
+  for (auto it = items.begin(); it != items.end(); ++it) {
+    if (std::find(items.begin(), it, *it) != it) return *it;
+  }
+  return {};
+}
+
 BenchPlan planBench(const BenchRequest& request) {
   BenchPlan plan;
   std::vector<std::string> scene_names =
@@ -68,11 +75,8 @@ BenchPlan planBench(const BenchRequest& request) {
   std::vector<std::string> methods = request.methods == "all" ? knownMethods() : splitList(request.methods);
   if (scene_names.empty()) throw std::invalid_argument("no scene named (--scene)");
   for (const auto& m : methods) requireKnownMethod(m);
-  for (std::size_t k = 0; k < request.presets.size(); ++k) {
-    if (std::find(request.presets.begin(), request.presets.begin() + static_cast<std::ptrdiff_t>(k),
-                  request.presets[k]) != request.presets.begin() + static_cast<std::ptrdiff_t>(k)) {
-      throw std::invalid_argument("preset '" + request.presets[k] + "' named twice (--preset)");
-    }
+  if (const std::string twice = firstRepeated(request.presets); !twice.empty()) {
+    throw std::invalid_argument("preset '" + twice + "' named twice (--preset)");
   }
   // Empty: the scene's own preset.
   const std::vector<std::string> presets = request.presets.empty() ? std::vector<std::string>{""} : request.presets;

@@ -60,6 +60,9 @@ struct BenchPlan {
   std::vector<std::unique_ptr<gaze::GazeRecording>> recordings;  // what the runs' gaze points to
 };
 
+// The first item of `items` that an earlier one repeats; empty if none does.
+std::string firstRepeated(const std::vector<std::string>& items);
+
 // Loads every scene and recording the request names; throws std::invalid_argument naming what is
 // unknown or missing. The plan owns what its runs point to (keep it alive while they run).
 BenchPlan planBench(const BenchRequest& request);
