@@ -42,10 +42,10 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->delimiter(',')
       ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
   app.add_option("--load-state", request.load_state,
-                 "continue from this checkpoint (written by --save-state; one scene and method)")
+                 "continue from this checkpoint (written by --save-state; one scene, method and preset)")
       ->check(CLI::ExistingFile);
   app.add_option("--save-state", request.save_state,
-                 "write a checkpoint here after the last frame (one scene and method)");
+                 "write a checkpoint here after the last frame (one scene, method and preset)");
   app.add_option("--threads", request.threads, "OpenMP threads")->check(cli::range(1, 256))->capture_default_str();
   app.add_option("--out", request.out_dir, "output folder (one subfolder per scene/method when several)")
       ->capture_default_str();

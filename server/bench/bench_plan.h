@@ -37,8 +37,8 @@ struct BenchRequest {
   // thesis, pbf, dfsph: each scene runs once per preset named, the presets taking turns like the
   // methods; none: each scene's own
   std::vector<std::string> presets;
-  std::string load_state;  // a checkpoint to continue from (one scene, one method)
-  std::string save_state;  // where to write the checkpoint at the end (one scene, one method)
+  std::string load_state;  // a checkpoint to continue from (one scene, method and preset)
+  std::string save_state;  // where to write the checkpoint at the end (one scene, method and preset)
   // Set (by a signal) to stop early: the runs stop between frames and keep the rows recorded so far.
   const std::atomic<bool>* stop = nullptr;
 };
