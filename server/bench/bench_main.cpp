@@ -47,7 +47,9 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   app.add_option("--save-state", request.save_state,
                  "write a checkpoint here after the last frame (one scene, method and preset)");
   app.add_option("--threads", request.threads, "OpenMP threads")->check(cli::range(1, 256))->capture_default_str();
-  app.add_option("--out", request.out_dir, "output folder (one subfolder per scene/method when several)")
+  app.add_option(
+         "--out", request.out_dir,
+         "output folder (one subfolder per scene/method when several, scene/preset/method with several presets)")
       ->capture_default_str();
   app.add_option("--scene-dir", request.scene_dir, "folder of named scenes")->capture_default_str();
   app.add_option("--interleave", request.interleave,
