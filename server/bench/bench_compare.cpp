@@ -13,6 +13,15 @@ void addUnique(std::vector<T>& list, const T& value) {
   if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
 }
 
+// A markdown table's head: `first` over the row labels, then one right-aligned column each.
+std::string tableHead(const std::string& first, const std::vector<std::string>& columns) {
+  std::string head = "| " + first + " |";
+  for (const auto& c : columns) head += ' ' + c + " |";
+  head += "\n|---|";
+  for (std::size_t k = 0; k < columns.size(); ++k) head += "---:|";
+  return head + "\n";
+}
+
 std::string fixed(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -92,15 +101,7 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
       md += "\n## ";
       md += scene;
       if (presets.size() > 1) md += ", preset " + preset;
-      md += "\n\n| phase |";
-      for (const auto& m : methods) {
-        md += ' ';
-        md += m;
-        md += " |";
-      }
-      md += "\n|---|";
-      for (std::size_t k = 0; k < methods.size(); ++k) md += "---:|";
-      md += "\n";
+      md += "\n\n" + tableHead("phase", methods);
       for (const Row& row : rows) {
         md += std::string("| ") + row.label + " |";
         for (const auto& m : methods) {
@@ -145,11 +146,7 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
     md += scene;
     md += ": presets compared\n\nWall-clock seconds per simulated second; in brackets, against ";
     md += presets.front();
-    md += " in the same run.\n\n| method |";
-    for (const auto& p : presets) md += ' ' + p + " |";
-    md += "\n|---|";
-    for (std::size_t k = 0; k < presets.size(); ++k) md += "---:|";
-    md += "\n";
+    md += " in the same run.\n\n" + tableHead("method", presets);
     for (const auto& m : methods) {
       const RunSummary* first = find(scene, presets.front(), m);
       if (first == nullptr) continue;
