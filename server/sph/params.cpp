@@ -64,6 +64,9 @@ void SimParams::validate() const {
   requireFinite(gravity, "gravity");
   requirePositive(mass_small, "mass_small");
   requirePositive(mass_large, "mass_large");
+  // A split halves a particle's mass (3.38) and a merge adds two (3.41): only then does every
+  // particle of a class keep its class's mass, which mass by class and the pair passes rely on.
+  if (mass_large != 2.0 * mass_small) throw std::invalid_argument("parameter 'mass_large' must be twice 'mass_small'");
   requirePositive(kernel_particles_small, "kernel_particles_small");
   requirePositive(kernel_particles_large, "kernel_particles_large");
   if (resort_interval < 1) throw std::invalid_argument("parameter 'resort_interval' must be >= 1");

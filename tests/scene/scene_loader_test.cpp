@@ -150,6 +150,15 @@ TEST(SceneLoader, NegativeAndNonFiniteSizesAreRejected) {
       std::string::npos);
 }
 
+// A split halves a particle's mass and a merge adds two: classes of other masses would leave split
+// children with a mass that is not their class's.
+TEST(SceneLoader, ClassMassesOtherThanOneToTwoAreRejected) {
+  const sph::Scene s = scene::parseScene(withKey(R"("params": {"mass_small": 0.005, "mass_large": 0.01})"), "t");
+  EXPECT_DOUBLE_EQ(s.params.mass_small, 0.005);
+  const std::string e = errorOf(withKey(R"("params": {"mass_small": 0.01, "mass_large": 0.03})"));
+  EXPECT_NE(e.find("'mass_large' must be twice 'mass_small'"), std::string::npos) << e;
+}
+
 TEST(SceneLoader, WaterOutsideTheBoxIsRejected) {
   const std::string e =
       errorOf(R"({"box": {"min": [0,0,0], "max": [1,1,1]}, "water": {"min": [0,0,0], "max": [2,1,1]}})");
