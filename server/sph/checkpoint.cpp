@@ -198,11 +198,21 @@ CheckpointInfo loadCheckpoint(Simulation& sim, const std::string& method, const 
     if (!allFinite(values)) in.fail(std::string("attribute '") + spec.name + "' holds a non-finite value");
   });
   if (!in.atEnd()) in.fail("unexpected bytes after the last attribute");
+  const auto classes = sim.params().classes();
   for (std::size_t i = 0; i < restored.size(); ++i) {
     if (restored.size_class[i] != SizeClass::Small && restored.size_class[i] != SizeClass::Large) {
       in.fail("particle " + std::to_string(i) + " has an unknown size class");
     }
     if (restored.id[i] >= next_id) in.fail("particle id " + std::to_string(restored.id[i]) + " beyond the id counter");
+    // The solvers take a particle's mass and support from its class (pair_kernels.h): a file from a
+    // scene of other particle counts (the same name, another mass) would not match them.
+    const SizeClassProps& props = classes[classIndex(restored.size_class[i])];
+    if (restored.mass[i] != static_cast<float>(props.mass) ||
+        restored.support[i] != static_cast<float>(props.support)) {
+      in.fail("particle " + std::to_string(i) +
+              " has another mass or support than its class has here (saved from "
+              "a scene with other particle counts?)");
+    }
   }
   restored.setNextId(next_id);
   sim.restore(std::move(restored), info.steps, tracking == 1);

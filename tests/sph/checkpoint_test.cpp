@@ -140,6 +140,15 @@ TEST_F(CheckpointRefusal, OtherPresetSceneOrMethod) {
   expectRefused(*fresh, "surface", "method 'regular'");
 }
 
+TEST_F(CheckpointRefusal, SceneOfOtherParticleMasses) {
+  sph::Scene heavier = tank("pbf");
+  heavier.params.mass_small *= 2.0;
+  heavier.params.mass_large *= 2.0;
+  heavier.large_particles /= 2;
+  auto other = makeSim(heavier, sph::Method::Regular);
+  expectRefused(*other, "regular", "another mass or support than its class has here");
+}
+
 TEST_F(CheckpointRefusal, TruncatedCorruptedOrForeignFile) {
   auto fresh = makeSim(tank("pbf"), sph::Method::Regular);
   write(bytes_.substr(0, bytes_.size() / 2));
