@@ -43,10 +43,10 @@ constexpr float kDfsphContact = 0.4f;
 IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
   IncompressibleSetup s;
   const auto classes = scene.params.classes();
-  s.kernels = PairKernels::forSupports({classes[0].support, classes[1].support});
+  s.kernels = PairKernels::forClasses({classes[0].support, classes[1].support}, {classes[0].mass, classes[1].mass});
   for (int c = 0; c < kSizeClassCount; ++c) {
     const auto cu = static_cast<std::size_t>(c);
-    s.mass[cu] = static_cast<float>(classes[cu].mass);
+    s.mass[cu] = s.kernels.mass[cu];
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
     s.contact[cu] = (scene.params.solver == Solver::kPbf ? kPbfContact : kDfsphContact) * s.spacing[cu];
     s.lattice_grad_sq[cu] = s.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
@@ -74,7 +74,6 @@ VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next
                                 bool confinement, bool last_step, bool track_surface_distance) {
   VelocityArrays v;
   v.n = p.size();
-  v.mass = p.mass.data();
   v.support = p.support.data();
   v.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
   v.position = p.position.data()->data();

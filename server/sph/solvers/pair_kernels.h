@@ -15,14 +15,23 @@ namespace sph {
 struct PairKernels {
   std::array<CubicKernel, kSizeClassCount> classes{};
   CubicKernel mixed;
+  // Each class's particle mass: every particle of a class has it (split and merge keep it so), and
+  // a pair pass knows a neighbour's class from the support it reads for the mixed pairs' kernel,
+  // so it takes the neighbour's mass from here instead of gathering it (pair_kernel.inc).
+  std::array<float, kSizeClassCount> mass{};
 
   CubicKernel& operator[](std::size_t c) { return classes[c]; }
   const CubicKernel& operator[](std::size_t c) const { return classes[c]; }
 
-  // Each class's kernel of the given support, and the mixed pairs'.
-  static PairKernels forSupports(const std::array<double, kSizeClassCount>& support) {
+  // Each class's kernel of the given support and its mass, and the mixed pairs' kernel. The
+  // supports must differ: a pass tells the classes apart by them.
+  static PairKernels forClasses(const std::array<double, kSizeClassCount>& support,
+                                const std::array<double, kSizeClassCount>& mass) {
     PairKernels k;
-    for (std::size_t c = 0; c < k.classes.size(); ++c) k.classes[c] = CubicKernel::forSupport(support[c]);
+    for (std::size_t c = 0; c < k.classes.size(); ++c) {
+      k.classes[c] = CubicKernel::forSupport(support[c]);
+      k.mass[c] = static_cast<float>(mass[c]);
+    }
     k.mixed = CubicKernel::forSupport(0.5 * (support[0] + support[1]));
     return k;
   }
