@@ -1,6 +1,7 @@
 // dfsph's constant-density solve past its first Jacobi iterations: preconditioned conjugate
 // gradients with a proximal term (dfsph_solver.h, DfsphSolver::conjugateGradients).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "sph/solvers/dfsph_solver.h"
@@ -49,53 +50,50 @@ int DfsphSolver::conjugateGradients(const FrameContext& frame, const DfsphPassFo
   }
   const float* mass = p.mass.data();
   // <r', z> and <s, diag(B) s> in the mass-weighted product (r' = diag(B) z: the regularised
-  // system's residual on the active particles).
-  const auto weighted = [&](const std::vector<float>& x) {
-    return orderedSum(
-        n, [&](std::size_t i) { return active_[i] ? static_cast<double>(mass[i]) * x[i] * x[i] * diagonal(i) : 0.0; });
+  // system's residual on the active particles): element i's term.
+  const auto weighted = [&](const std::vector<float>& x, std::size_t i) {
+    return active_[i] ? static_cast<double>(mass[i]) * x[i] * x[i] * diagonal(i) : 0.0;
   };
   // Stops at the tolerance on the mean |residual| (both signs: the iterates overshoot, where
-  // Jacobi's approach from one side), not at solve's one-sided mean.
-  const auto deviation = [&] {
-    return orderedSum(n, [&](std::size_t i) {
-      return static_cast<double>(active_[i] ? std::abs(residual_[i]) : std::max(residual_[i], 0.0f));
-    });
+  // Jacobi's approach from one side), not at solve's one-sided mean: element i's term.
+  const auto deviation = [&](std::size_t i) {
+    return static_cast<double>(active_[i] ? std::abs(residual_[i]) : std::max(residual_[i], 0.0f));
   };
   const double count = static_cast<double>(std::max<std::size_t>(n, 1));
-  double rz = weighted(preconditioned_);
+  double rz = orderedSum(n, sum_partials_, [&](std::size_t i) { return weighted(preconditioned_, i); });
   int since_anchor = 0;
   arrays_.stiffness = search_.data();
   while (iteration < frame.scene.params.max_iterations && rz > 0.0) {
     forms.acceleration(arrays_, constants_, frame.grid);
     forms.change(arrays_, constants_, frame.grid);  // B search = -scale change_
-    const double curvature = -scale * orderedSum(n, [&](std::size_t i) {
-      return static_cast<double>(mass[i]) * search_[i] * change_[i];
-    }) + kProximal * weighted(search_);
+    // Each iteration's O(n) work in as few sweeps as the sums allow (ordered_sum.h).
+    const auto [search_change, search_weighted] = orderedSums<2>(n, sum_partials_, [&](std::size_t i) {
+      return std::array<double, 2>{static_cast<double>(mass[i]) * search_[i] * change_[i], weighted(search_, i)};
+    });
+    const double curvature = -scale * search_change + kProximal * search_weighted;
     if (!(curvature > 0.0)) break;
     const auto alpha = static_cast<float>(rz / curvature);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
+    const auto [deviation_sum, rz_next] = orderedSums<2>(n, sum_partials_, [&](std::size_t i) {
       stiffness_[i] += alpha * search_[i];
       residual_[i] += alpha * scale * change_[i];
       preconditioned_[i] = active_[i] ? residual_[i] / diagonal(i) - kProximal * (stiffness_[i] - anchor_[i]) : 0.0f;
-    }
+      return std::array<double, 2>{deviation(i), weighted(preconditioned_, i)};
+    });
     ++iteration;
-    if (deviation() / count <= tolerance && iteration >= least) break;
+    if (deviation_sum / count <= tolerance && iteration >= least) break;
     if (++since_anchor == kAnchorIterations) {
       // The proximal point method's next step (Rockafellar 1976): anchored at the k reached, so
       // that the solves converge to B k = b where it wants k far from the Jacobi iterations' (a
       // single anchor left small_box's column short of the tolerance for 100 iterations).
       since_anchor = 0;
-#pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
+      rz = orderedSum(n, sum_partials_, [&](std::size_t i) {
         anchor_[i] = stiffness_[i];
         preconditioned_[i] = active_[i] ? residual_[i] / diagonal(i) : 0.0f;
         search_[i] = preconditioned_[i];
-      }
-      rz = weighted(preconditioned_);
+        return weighted(preconditioned_, i);
+      });
       continue;
     }
-    const double rz_next = weighted(preconditioned_);
     const auto beta = static_cast<float>(rz_next / rz);
     rz = rz_next;
 #pragma omp parallel for schedule(static)

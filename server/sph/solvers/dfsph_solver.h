@@ -52,7 +52,8 @@ class DfsphSolver : public FluidSolver {
   std::vector<float> inverse_diagonal_, wall_rate_, change_, target_, stiffness_;
   std::vector<float> residual_, search_, preconditioned_, anchor_;  // conjugateGradients'
   std::vector<std::uint8_t> active_;
-  PairVectorStore pair_grad_;  // DfsphArrays::pair_grad
+  std::vector<double> sum_partials_;  // orderedSums' scratch
+  PairVectorStore pair_grad_;         // DfsphArrays::pair_grad
   PbfConstants placement_constants_;
   LocalPlacement placement_;
   std::vector<Vec3> place_next_position_, place_wall_grad_;

@@ -33,10 +33,11 @@ constexpr std::uint8_t kNearPlacement = 3;
 
 // Mean of rho / rho0 - 1 over the particles, where positive: what the tolerance bounds. Summed in
 // a fixed order (ordered_sum.h), so the count of iterations it decides is the same for any thread count.
-double meanCompression(const ParticleSet& p, float rest_density) {
+double meanCompression(const ParticleSet& p, float rest_density, std::vector<double>& partials) {
   if (p.size() == 0) return 0.0;
-  const double sum = orderedSum(
-      p.size(), [&](std::size_t i) { return std::max(static_cast<double>(p.density[i]) / rest_density - 1.0, 0.0); });
+  const double sum = orderedSum(p.size(), partials, [&](std::size_t i) {
+    return std::max(static_cast<double>(p.density[i]) / rest_density - 1.0, 0.0);
+  });
   return sum / static_cast<double>(p.size());
 }
 
@@ -161,8 +162,9 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   while (more) {
     a.position = p.position.data()->data();
     forms.lambda(a, constants_, frame.grid);
-    more = iterations + 1 < least || (iterations + 1 < most && params.pbf_density_tolerance > 0.0 &&
-                                      meanCompression(p, constants_.rest_density) > params.pbf_density_tolerance);
+    more = iterations + 1 < least ||
+           (iterations + 1 < most && params.pbf_density_tolerance > 0.0 &&
+            meanCompression(p, constants_.rest_density, sum_partials_) > params.pbf_density_tolerance);
     a.position_next = next_position_.data()->data();
     forms.correct(a, constants_, frame.grid, iterations == 0 && constants_.tensile_k > 0.0f);
     p.position.swap(next_position_);

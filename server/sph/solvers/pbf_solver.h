@@ -39,7 +39,8 @@ class PbfSolver : public FluidSolver {
   std::vector<float> lambda_, lambda_step_;
   std::vector<float> density_at_start_;  // the frame's, for the placed particles' extra iterations
   LocalPlacement placement_;
-  std::vector<float> pressure_sum_;  // the frame's steps' pressures, summed
+  std::vector<float> pressure_sum_;   // the frame's steps' pressures, summed
+  std::vector<double> sum_partials_;  // orderedSum's scratch
 };
 
 }  // namespace sph
