@@ -114,6 +114,7 @@ void readParams(const Context& ctx, const json& params, sph::SimParams& p) {
       {"pbf_max_iterations",
        [&](const json& v, const std::string& k) { p.pbf_max_iterations = ctx.positiveInt(v, k); }},
       {"pbf_relaxation", [&](const json& v, const std::string& k) { p.pbf_relaxation = ctx.positive(v, k); }},
+      {"pbf_omega", [&](const json& v, const std::string& k) { p.pbf_omega = ctx.positive(v, k); }},
       {"pbf_tensile_k", [&](const json& v, const std::string& k) { p.pbf_tensile_k = ctx.nonNegative(v, k); }},
       {"pbf_tensile_dq", [&](const json& v, const std::string& k) { p.pbf_tensile_dq = ctx.positive(v, k); }},
       {"pbf_tensile_n", [&](const json& v, const std::string& k) { p.pbf_tensile_n = ctx.positiveInt(v, k); }},

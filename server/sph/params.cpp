@@ -80,6 +80,8 @@ void SimParams::validate() const {
     throw std::invalid_argument("parameter 'pbf_max_iterations' must be in [1, 100]");
   }
   requirePositive(pbf_relaxation, "pbf_relaxation");
+  requirePositive(pbf_omega, "pbf_omega");
+  if (pbf_omega > 1.0) throw std::invalid_argument("parameter 'pbf_omega' must be in (0, 1]");
   requireFinite(pbf_tensile_k, "pbf_tensile_k");
   if (pbf_tensile_k < 0.0) throw std::invalid_argument("parameter 'pbf_tensile_k' must be >= 0");
   requirePositive(pbf_tensile_dq, "pbf_tensile_dq");
@@ -127,10 +129,14 @@ SimParams incompressibleBase(const char* name, Solver solver) {
 
 SimParams pbfPreset() {
   SimParams p = incompressibleBase("pbf", Solver::kPbf);
-  // Four solver steps of 2.5 ms a frame, three iterations each: each step starts from zero
-  // multipliers (pbf_solver.cpp), and the compression a deep tank keeps at rest falls with dt^2;
-  // with two steps it is about 2 %, with four about 0.5 %.
+  // Four solver steps of 2.5 ms a frame: each step starts from zero multipliers (pbf_solver.cpp),
+  // and the compression a deep tank keeps at rest falls with dt^2; with two steps it is about 2 %,
+  // with four about 0.5 %. Two iterations a step at a relaxation of 0.65 hold the tank and the
+  // dam-break front as three at 0.5 did, in two thirds of the passes; at 0.85 the tank did not
+  // come to rest, at 1 it blew up (docs/fluids.md).
   p.substeps = 4;
+  p.pbf_iterations = 2;
+  p.pbf_omega = 0.65;
   // No artificial pressure: MM13 add it against the clumping that negative pressure causes (the
   // tensile instability), but lambda <= 0 here (pbf_passes.h) already never pulls; at rest it
   // would be a stiff attraction, s_corr l_c is the same displacement whatever dt, that keeps a

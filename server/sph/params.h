@@ -64,7 +64,11 @@ struct SimParams {
   double pbf_density_tolerance = 0.0;
   int pbf_max_iterations = 20;
   double pbf_relaxation = 0.01;  // pbf: constraint force mixing, relative to a full neighbourhood's (MM13 eq. 11)
-  double pbf_tensile_k = 0.1;    // pbf: artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13)
+  // pbf (and dfsph's placement of split and merged particles): the Jacobi update's relaxation
+  // factor, lambda += omega dlambda. Neighbours correct each other's density at the same time, so
+  // the full step (1) overshoots and a resting tank oscillates.
+  double pbf_omega = 0.5;
+  double pbf_tensile_k = 0.1;  // pbf: artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13)
   double pbf_tensile_dq = 0.2;
   int pbf_tensile_n = 4;
   double xsph_viscosity = 0.01;        // c of XSPH velocity smoothing (MM13 eq. 17), both solvers

@@ -100,6 +100,14 @@ TEST(SceneLoader, PbfIterationBoundsAreReadAndChecked) {
   EXPECT_NE(errorOf(withKey(R"("params": {"pbf_max_iterations": 500})")).find("pbf_max_iterations"), std::string::npos);
 }
 
+TEST(SceneLoader, PbfRelaxationFactorIsReadAndChecked) {
+  EXPECT_DOUBLE_EQ(scene::parseScene(withKey(R"("preset": "pbf", "params": {"pbf_omega": 0.5})"), "t").params.pbf_omega,
+                   0.5);
+  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_omega": 0})")).find("params.pbf_omega"), std::string::npos);
+  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_omega": 1.5})")).find("'pbf_omega' must be in (0, 1]"),
+            std::string::npos);
+}
+
 TEST(SceneLoader, DfsphSolveChoiceIsReadAndChecked) {
   EXPECT_TRUE(scene::parseScene(withKey(R"("preset": "dfsph")"), "t").params.conjugate_gradients);
   EXPECT_FALSE(scene::parseScene(withKey(R"("preset": "dfsph", "params": {"conjugate_gradients": false})"), "t")

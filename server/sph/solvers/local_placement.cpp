@@ -8,10 +8,6 @@ namespace sph {
 
 namespace {
 
-// Under-relaxation of the Jacobi update of lambda: neighbours correct each other's density at the
-// same time, so the full Newton step (1) overshoots, and a resting tank oscillates.
-constexpr float kJacobiRelaxation = 0.5f;
-
 // The compression particle i's placement added, as the last constraint pass computed its density:
 // rho_i - max(rho_i at the frame's start, rho0) (a child starts with its parent's density).
 float placementExcess(const ParticleSet& p, std::span<const float> at_start, float rest_density, std::size_t i) {
@@ -46,7 +42,7 @@ PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& 
     c.contact[k] = setup.contact[k];
   }
   c.tensile_k = static_cast<float>(params.pbf_tensile_k);
-  c.omega = kJacobiRelaxation;
+  c.omega = static_cast<float>(params.pbf_omega);
   c.tensile_n = params.pbf_tensile_n;
   c.boundary = setup.boundary.get();
   return c;
