@@ -69,6 +69,13 @@ void SimParams::validate() const {
   if (mass_large != 2.0 * mass_small) throw std::invalid_argument("parameter 'mass_large' must be twice 'mass_small'");
   requirePositive(kernel_particles_small, "kernel_particles_small");
   requirePositive(kernel_particles_large, "kernel_particles_large");
+  // The pair passes tell a neighbour's class, so its kernel and mass, by its support.
+  const auto props = classes();
+  if (static_cast<float>(props[0].support) == static_cast<float>(props[1].support)) {
+    throw std::invalid_argument(
+        "parameters 'kernel_particles_small' and 'kernel_particles_large' give both classes "
+        "one support: the classes must differ in it");
+  }
   if (resort_interval < 1) throw std::invalid_argument("parameter 'resort_interval' must be >= 1");
   if (substeps < 1 || substeps > 100) throw std::invalid_argument("parameter 'substeps' must be in [1, 100]");
   if (pbf_iterations < 1 || pbf_iterations > 100) {

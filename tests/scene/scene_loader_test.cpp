@@ -165,6 +165,10 @@ TEST(SceneLoader, ClassMassesOtherThanOneToTwoAreRejected) {
   EXPECT_DOUBLE_EQ(s.params.mass_small, 0.005);
   const std::string e = errorOf(withKey(R"("params": {"mass_small": 0.01, "mass_large": 0.03})"));
   EXPECT_NE(e.find("'mass_large' must be twice 'mass_small'"), std::string::npos) << e;
+  // Twice the mass over half the kernel particles: the same support for both classes.
+  const std::string same =
+      errorOf(withKey(R"("params": {"kernel_particles_small": 40, "kernel_particles_large": 20})"));
+  EXPECT_NE(same.find("give both classes one support"), std::string::npos) << same;
 }
 
 TEST(SceneLoader, WaterOutsideTheBoxIsRejected) {
