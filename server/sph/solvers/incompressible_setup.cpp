@@ -46,10 +46,9 @@ IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
   s.kernels = PairKernels::forClasses({classes[0].support, classes[1].support}, {classes[0].mass, classes[1].mass});
   for (int c = 0; c < kSizeClassCount; ++c) {
     const auto cu = static_cast<std::size_t>(c);
-    s.mass[cu] = s.kernels.mass[cu];
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
     s.contact[cu] = (scene.params.solver == Solver::kPbf ? kPbfContact : kDfsphContact) * s.spacing[cu];
-    s.lattice_grad_sq[cu] = s.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
+    s.lattice_grad_sq[cu] = s.kernels.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
   }
   s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels.classes, s.spacing);
   return s;

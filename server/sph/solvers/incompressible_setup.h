@@ -18,8 +18,7 @@
 namespace sph {
 
 struct IncompressibleSetup {
-  PairKernels kernels;
-  std::array<float, kSizeClassCount> mass{};
+  PairKernels kernels;                           // each class's kernel and particle mass
   std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
   // The nearest a particle's centre may come to a wall: pbf half a spacing, dfsph 0.4 spacings
   // (incompressible_setup.cpp). The one-sided walls hold settled water only by compressing it, so
