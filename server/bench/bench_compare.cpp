@@ -22,6 +22,14 @@ std::string tableHead(const std::string& first, const std::vector<std::string>& 
   return head + "\n";
 }
 
+// A markdown table's row: `label`, then cell(column) for each column.
+template <class Cell>
+std::string tableRow(const std::string& label, const std::vector<std::string>& columns, Cell cell) {
+  std::string row = "| " + label + " |";
+  for (const auto& c : columns) row += ' ' + cell(c) + " |";
+  return row + "\n";
+}
+
 std::string fixed(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -102,26 +110,19 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
       md += scene;
       if (presets.size() > 1) md += ", preset " + preset;
       md += "\n\n" + tableHead("phase", methods);
-      for (const Row& row : rows) {
-        md += std::string("| ") + row.label + " |";
-        for (const auto& m : methods) {
+      // A row of the methods' cells: what `value` reads from each run, "-" where it did not run.
+      const auto methodRow = [&](const std::string& label, const auto& value) {
+        return tableRow(label, methods, [&](const std::string& m) {
           const RunSummary* r = find(scene, preset, m);
-          md += ' ';
-          md += r ? row.value(*r) : std::string("-");
-          md += " |";
-        }
-        md += "\n";
-      }
+          return r ? value(*r) : std::string("-");
+        });
+      };
+      for (const Row& row : rows) md += methodRow(row.label, row.value);
       const RunSummary* regular = find(scene, preset, "regular");
       if (regular && regular->summary.total.mean > 0.0) {
-        md += "| Total / regular |";
-        for (const auto& m : methods) {
-          const RunSummary* r = find(scene, preset, m);
-          md += ' ';
-          md += r ? fixed(r->summary.total.mean / regular->summary.total.mean, 2) : std::string("-");
-          md += " |";
-        }
-        md += "\n";
+        md += methodRow("Total / regular", [&](const RunSummary& r) {
+          return fixed(r.summary.total.mean / regular->summary.total.mean, 2);
+        });
       }
       const RunSummary* any = nullptr;
       for (const auto& m : methods) any = any ? any : find(scene, preset, m);
@@ -150,21 +151,15 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
     for (const auto& m : methods) {
       const RunSummary* first = find(scene, presets.front(), m);
       if (first == nullptr) continue;
-      md += "| " + m + " |";
-      for (const auto& p : presets) {
+      md += tableRow(m, presets, [&](const std::string& p) {
         const RunSummary* r = find(scene, p, m);
-        md += ' ';
-        if (r == nullptr) {
-          md += '-';
-        } else {
-          md += fixed(r->summary.wall_per_simulated, 2);
-          if (first->summary.wall_per_simulated > 0.0) {
-            md += " (" + fixed(r->summary.wall_per_simulated / first->summary.wall_per_simulated, 2) + ")";
-          }
+        if (r == nullptr) return std::string("-");
+        std::string cell = fixed(r->summary.wall_per_simulated, 2);
+        if (first->summary.wall_per_simulated > 0.0) {
+          cell += " (" + fixed(r->summary.wall_per_simulated / first->summary.wall_per_simulated, 2) + ")";
         }
-        md += " |";
-      }
-      md += "\n";
+        return cell;
+      });
     }
   }
   return md;
