@@ -12,7 +12,7 @@ particles=${2:-20000}
 frames=${3:-600}
 rounds=${4:-1}
 if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1920x1080x24" "$0" "$@"
+  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" "$0" "$@"
 fi
 out=$(mktemp)
 "$build/bin/viewer_bench_publisher" --particles "$particles" --hz 60 >"$out" &

@@ -4,7 +4,10 @@ exit code 2, nothing on stdout; logs go to stderr, stdout carries only data and 
 
 Run by ctest (tests/cli/CMakeLists.txt) with SPH_BIN_DIR = the build's bin/ and SPH_SOURCE_DIR."""
 
+import contextlib
 import os
+import select
+import shutil
 import signal
 import socket
 import subprocess
@@ -16,7 +19,7 @@ SOURCE = os.environ["SPH_SOURCE_DIR"]
 VERSION = os.environ["SPH_VERSION"]
 PROGRAMS = ["sph_server", "sph_bench", "sph_validate", "sph_gaze_record", "sph_keygen", "sph_relay", "gaze_bridge", "sph_viewer",
             "sph_load"]
-# No display is needed: every case below stops before the viewer opens a window.
+# No display from the caller: the one case that opens a window starts its own (virtual_display).
 ENV = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
 DEADLINE_S = 120  # a hang, not a speed limit
 
@@ -24,6 +27,32 @@ DEADLINE_S = 120  # a hang, not a speed limit
 def run(program, *args, **kwargs):
     return subprocess.run([os.path.join(BIN, program), *args], capture_output=True, text=True, env=ENV,
                           timeout=DEADLINE_S, **kwargs)
+
+
+@contextlib.contextmanager
+def virtual_display():
+    """An Xvfb of our own, as the window tests start it (tests/viewer/child_process.cpp): -displayfd
+    picks a free display, so parallel tests never race for one. Not xvfb-run: its clean-up can fail
+    after the program under test has exited and then replaces that program's exit code with 5."""
+    read_end, write_end = os.pipe()
+    xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
+                             "-noreset"], pass_fds=(write_end,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    try:
+        # Xvfb writes the display number and a newline once it accepts connections.
+        number = b""
+        while not number.endswith(b"\n") and select.select([read_end], [], [], DEADLINE_S)[0]:
+            chunk = os.read(read_end, 16)
+            if not chunk:
+                break
+            number += chunk
+        if not number.endswith(b"\n"):
+            raise RuntimeError("Xvfb did not report a display")
+        yield f":{int(number)}"
+    finally:
+        os.close(read_end)
+        xvfb.terminate()
+        xvfb.wait(timeout=DEADLINE_S)
 
 
 def any_port_endpoint():
@@ -188,16 +217,17 @@ class StreamsAndExitCodes(unittest.TestCase):
             self.assertTrue(os.path.exists(os.path.join(out, "summary.json")))
 
     def test_viewer_without_server_names_the_endpoint_and_exits_3(self):
-        if subprocess.run(["which", "xvfb-run"], capture_output=True).returncode != 0:
-            self.skipTest("xvfb-run not installed")
+        if shutil.which("Xvfb") is None:
+            self.skipTest("Xvfb not installed")
         # --timeout, and --duration (what the main command uses headless): both say where they waited.
         for limit in (["--timeout", "1"], ["--duration", "1"]):
-            with self.subTest(limit=limit[0]), socket.socket() as held, tempfile.TemporaryDirectory() as out:
+            with self.subTest(limit=limit[0]), socket.socket() as held, tempfile.TemporaryDirectory() as out, \
+                    virtual_display() as display:
                 held.bind(("127.0.0.1", 0))
                 endpoint = f"tcp://127.0.0.1:{held.getsockname()[1]}"
-                r = subprocess.run(["xvfb-run", "-a", os.path.join(BIN, "sph_viewer"), "--frames-endpoint", endpoint,
-                                    "--snapshot", os.path.join(out, "x.png"), *limit, "--width", "160", "--height",
-                                    "120"], capture_output=True, text=True, env=ENV, timeout=DEADLINE_S)
+                r = subprocess.run([os.path.join(BIN, "sph_viewer"), "--frames-endpoint", endpoint, "--snapshot",
+                                    os.path.join(out, "x.png"), *limit, "--width", "160", "--height", "120"],
+                                   capture_output=True, text=True, env={**ENV, "DISPLAY": display}, timeout=DEADLINE_S)
                 self.assertEqual(r.returncode, 3, r.stderr)
                 self.assertIn(f"waiting for frames from {endpoint}", r.stderr)
                 self.assertIn(f"no frame from a server at {endpoint}", r.stderr)
