@@ -51,7 +51,6 @@ DfsphSolver::DfsphSolver(const Scene& scene)
   constants_.rest_density = static_cast<float>(scene.params.rest_density);
   constants_.boundary = setup_.boundary.get();
   velocity_constants_.kernels = setup_.kernels;
-  velocity_constants_.xsph = static_cast<float>(scene.params.xsph_viscosity);
 }
 
 // Only the warm start: the quasi-static relaxation pbf settles with (relaxAtRest) does not
@@ -241,14 +240,18 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   }
   frame.timings.density_pressure_ms += msSince(t);
 
-  // Gravity and XSPH viscosity (with |n| and the surface-distance hop for the adaptive step).
+  // Gravity, and in the frame's last step XSPH viscosity for the whole frame (xsphOfFrame; with
+  // |n| and the surface-distance hop for the adaptive step).
   t = std::chrono::steady_clock::now();
   const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p.velocity[i] += dt * gravity;
-  const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, false, last, frame.track_surface_distance);
-  dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
-  p.velocity.swap(next_velocity_);
+  if (last) {
+    velocity_constants_.xsph = xsphOfFrame(frame.scene.params.xsph_viscosity, frame.stats.substeps + 1);
+    const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, false, true, frame.track_surface_distance);
+    dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
+    p.velocity.swap(next_velocity_);
+  }
   frame.timings.accel_integrate_collide_ms += msSince(t);
 
   // The constant-density solver.

@@ -69,7 +69,6 @@ PbfSolver::PbfSolver(const Scene& scene)
     : setup_(makeIncompressibleSetup(scene)), constants_(pbfConstantsOf(scene.params, setup_)) {
   const SimParams& p = scene.params;
   velocity_constants_.kernels = setup_.kernels;
-  velocity_constants_.xsph = static_cast<float>(p.xsph_viscosity);
   velocity_constants_.vorticity_epsilon = static_cast<float>(p.vorticity_confinement);
 }
 
@@ -196,13 +195,18 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
     }
     p.velocity[i] = velocity;
   }
+  // XSPH in the frame's last step for the whole frame (xsphOfFrame); confinement, a force, every
+  // step (its pass's smoothing 0 in the others).
   const bool confinement = velocity_constants_.vorticity_epsilon > 0.0f;
-  const VelocityArrays v =
-      velocityArraysOf(p, next_velocity_, vorticity_, confinement, last, frame.track_surface_distance);
-  const VelocityPassForms velocity = dispatchedVelocityPassForms();
-  velocity.smooth(v, velocity_constants_, frame.grid);
-  if (confinement) velocity.confine(v, velocity_constants_, frame.grid);
-  p.velocity.swap(next_velocity_);
+  if (last || confinement) {
+    velocity_constants_.xsph = last ? xsphOfFrame(frame.scene.params.xsph_viscosity, frame.stats.substeps) : 0.0f;
+    const VelocityArrays v =
+        velocityArraysOf(p, next_velocity_, vorticity_, confinement, last, frame.track_surface_distance);
+    const VelocityPassForms velocity = dispatchedVelocityPassForms();
+    velocity.smooth(v, velocity_constants_, frame.grid);
+    if (confinement) velocity.confine(v, velocity_constants_, frame.grid);
+    p.velocity.swap(next_velocity_);
+  }
 
   // The attributes the rest of the step and the frames read: density (of the last constraint
   // pass), volume, and (added to pressure_sum_ for advance) the pressure whose impulse the

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -41,6 +42,13 @@ struct VelocityConstants {
   float xsph = 0.0f;
   float vorticity_epsilon = 0.0f;  // m/s: the confinement's acceleration is eps (N x omega)
 };
+
+// The XSPH coefficient of a frame's smoothing. Both solvers smooth once a frame, in its last step
+// (whose pass also gives the adaptive step |n| and the hop), by as much as `steps` smoothings of c
+// each leave of a velocity difference: 1 - (1 - c)^steps. So c keeps MM13's meaning, per solver
+// step, and the smoothing per simulated second does not grow with the steps a CFL bound adds
+// (docs/fluids.md, "XSPH once a frame").
+inline float xsphOfFrame(double c, int steps) { return static_cast<float>(1.0 - std::pow(1.0 - c, steps)); }
 
 struct VelocityPassForms {
   void (*smooth)(const VelocityArrays&, const VelocityConstants&, const NeighborGrid&);
