@@ -150,8 +150,8 @@ SimParams pbfPreset() {
   // tank jittering at several cm/s.
   p.pbf_tensile_k = 0.0;
   // XSPH a little stronger than the base's 0.01 a step: smoothed once a frame (velocity_passes.h,
-  // xsphOfFrame) instead of every step, 0.01 left the validation tank at about 4 mm/s after 6 s,
-  // 0.015 at about 2, the fronts the same (docs/fluids.md).
+  // xsphOfFrame) instead of every step, 0.01 left the validation tank less calm than before, 0.015
+  // calmer, the fronts the same (docs/fluids.md).
   p.xsph_viscosity = 0.015;
   // No vorticity confinement (MM13 eq. 16) either: it puts back rotation that a coarse solver
   // damps, but at this resolution the Martin & Moyce front and the resting tank are the same
@@ -170,11 +170,11 @@ SimParams dfsphPreset() {
   // sloshing at 0.1-0.5 m/s; in 5 ms steps it comes to rest (docs/fluids.md).
   p.substeps = 2;
   // A tank released from its lattice sloshes for seconds: with c = 0.01 it came below 5 mm/s
-  // after about 6 s, with 0.05 after 2 s (smoothed every step; once a frame, 0.06 keeps the tank
-  // as calm); the divergence solve's tolerance sets the speed it
-  // keeps at rest (up to 4.7 mm/s at 1e-3, 1.3-2.3 at 1e-4, about 3 at 3e-4) and, where the water
-  // moves, its cost: 3e-4 takes a third of 1e-4's divergence iterations on the dam break, with
-  // the same front and the held column as still (docs/performance.md).
+  // after about 6 s, with 0.05 after 2 s (smoothed every step; smoothed once a frame, 0.06 keeps
+  // it as calm); the divergence solve's tolerance sets the speed it keeps at rest (up to 4.7 mm/s
+  // at 1e-3, 1.3-2.3 at 1e-4, about 3 at 3e-4) and, where the water moves, its cost: 3e-4 takes a
+  // third of 1e-4's divergence iterations on the dam break, with the same front and the held
+  // column as still (docs/performance.md).
   p.xsph_viscosity = 0.06;
   p.divergence_tolerance = 3e-4;
   // Conjugate gradients past the first Jacobi iterations: the validation tank comes to rest
