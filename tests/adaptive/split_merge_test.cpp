@@ -151,11 +151,13 @@ TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
 }
 
 // How much a split or merge step may add, to the rms speed (m/s) and to the largest density error
-// (a share of rho0), with the frames the pool rests first.
+// (a share of rho0), with the frames the pool rests first, and the largest rms (m/s) in the 50
+// frames after.
 struct PlacementBounds {
   int settle_frames;
   double kick;
   float compression;
+  double peak;
 };
 
 // Splitting every particle of a resting pool, then merging every pair it can: where the split or
@@ -196,9 +198,16 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
               compression_before, maxCompression());
   EXPECT_LT(after_split, rest + bounds.kick);
   EXPECT_LE(maxCompression() - compression_before, bounds.compression);
-  for (int s = 0; s < 50; ++s) sim.step();
-  std::printf("rms 50 frames later %.4f m/s\n", rms());
+  // The frames between: the pool breathes after a whole split (docs/fluids.md, the split's lift),
+  // its rms peaking a few frames on; bounded so that a worse placement shows.
+  double peak = 0.0;
+  for (int s = 0; s < 50; ++s) {
+    sim.step();
+    peak = std::max(peak, rms());
+  }
+  std::printf("rms 50 frames later %.4f m/s (at most %.4f in between)\n", rms(), peak);
   EXPECT_LT(rms(), 0.15);
+  EXPECT_LT(peak, bounds.peak);
   adaptive_test::expectMassByClass(sim, initial_mass);
 
   // Merging every pair it can back: likewise.
@@ -217,9 +226,14 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
               after_merge, compression_before_merge, maxCompression());
   EXPECT_LT(after_merge, before_merge + bounds.kick);
   EXPECT_LE(maxCompression() - compression_before_merge, bounds.compression);
-  for (int s = 0; s < 50; ++s) sim.step();
-  std::printf("rms 50 frames later %.4f m/s\n", rms());
+  peak = 0.0;
+  for (int s = 0; s < 50; ++s) {
+    sim.step();
+    peak = std::max(peak, rms());
+  }
+  std::printf("rms 50 frames later %.4f m/s (at most %.4f in between)\n", rms(), peak);
   EXPECT_LT(rms(), 0.15);
+  EXPECT_LT(peak, bounds.peak);
   adaptive_test::expectMassByClass(sim, initial_mass);
 }
 
@@ -227,17 +241,20 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
 // constraint iterates on while placed particles are compressed: 12 % without that), and no kick.
 // Before the placement rule the split step gave 0.9 m/s rms and the pool still moved at 0.24 m/s
 // 50 frames later (a LARGE pool left alone: about 0.03 m/s); before the neighbours of a merge
-// counted as placed the merge step gave 0.33 m/s.
+// counted as placed the merge step gave 0.33 m/s. In the frames after a whole split or merge the
+// pool breathes (both solvers, 0.12-0.15 m/s at most; the pool without a split about 0.04): the
+// lift of docs/fluids.md, not met; 0.2 keeps it from growing.
 TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
-  expectSplittingOrMergingARestingPoolDoesNotKickIt("pbf", {6, 0.03, 0.05f});
+  expectSplittingOrMergingARestingPoolDoesNotKickIt("pbf", {6, 0.03, 0.05f, 0.2});
 }
 
 // dfsph, from rest (0.016 m/s after 150 frames): without the placement the split step threw the
 // pool to 3.5 m/s rms. With it the split raises the largest density error by 1-2 % (the issue's
 // 5 % holds) but still sets the pool moving, 0.07 m/s, and the merge adds 0.05-0.06 m/s: more
-// than pbf's 0.03 (docs/fluids.md), so the kick's bound here is 0.1 m/s.
+// than pbf's 0.03 (docs/fluids.md), so the kick's bound here is 0.1 m/s. The frames after: as pbf's
+// (the pool without a split about 0.01 m/s).
 TEST(SplitMerge, SplittingOrMergingARestingDfsphPoolDoesNotThrowIt) {
-  expectSplittingOrMergingARestingPoolDoesNotKickIt("dfsph", {150, 0.1, 0.05f});
+  expectSplittingOrMergingARestingPoolDoesNotKickIt("dfsph", {150, 0.1, 0.05f, 0.2});
 }
 
 // The AVX-512 search (16 neighbours at a time, each lane keeping its own best) must choose exactly
