@@ -92,6 +92,8 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   // At the last frame (water_level.h): the volume as sum m / rho against sum m / rho0, and the
   // gauges' mean level against the depth sum m / rho0 fills; null where no gauge fits.
   j["volume_end"] = {{"sum_m_over_rho", volumeAtEnd(run)}, {"sum_m_over_rho0", run.incompressible_volume}};
+  // The rms speed then (m/s): whether the level below is a settled depth.
+  j["rms_speed_end"] = run.records.empty() ? nlohmann::json() : nlohmann::json(run.records.back().rms_speed);
   const WaterLevel& level = run.water_level;
   j["water_level_end"] = level.gauges > 0 ? nlohmann::json{{"depth", level.depth},
                                                            {"incompressible_depth", level.incompressible_depth},
@@ -122,17 +124,25 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
 }
 
 std::string describeVolume(const RunResult& run) {
-  char buf[256];
+  char buf[320];
   const double volume =
       run.incompressible_volume > 0.0 ? 100.0 * (volumeAtEnd(run) / run.incompressible_volume - 1.0) : 0.0;
   const WaterLevel& level = run.water_level;
+  int used = 0;
   if (level.gauges == 0 || level.incompressible_depth <= 0.0) {
-    std::snprintf(buf, sizeof buf, "volume (sum m / rho) %+.2f %%, level n/a (no gauge clear of the walls)", volume);
+    used = std::snprintf(buf, sizeof buf, "volume (sum m / rho) %+.2f %%, level n/a (no gauge clear of the walls)",
+                         volume);
   } else {
-    std::snprintf(buf, sizeof buf,
-                  "volume (sum m / rho) %+.2f %%, level %.4f m against %.4f m (%+.2f %%, %d of %d gauges wet)", volume,
-                  level.depth, level.incompressible_depth, 100.0 * (level.depth / level.incompressible_depth - 1.0),
-                  level.wet, level.gauges);
+    used = std::snprintf(buf, sizeof buf,
+                         "volume (sum m / rho) %+.2f %%, level %.4f m against %.4f m (%+.2f %%, %d of %d gauges wet)",
+                         volume, level.depth, level.incompressible_depth,
+                         100.0 * (level.depth / level.incompressible_depth - 1.0), level.wet, level.gauges);
+  }
+  // The water's motion then: the level is the settled depth only once the water is at rest (a dam
+  // break still sloshes at 9 s, and its level there differs from the settled one).
+  if (!run.records.empty() && used > 0 && static_cast<std::size_t>(used) < sizeof buf) {
+    std::snprintf(buf + used, sizeof buf - static_cast<std::size_t>(used), ", rms speed %.3f m/s",
+                  run.records.back().rms_speed);
   }
   return buf;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -154,6 +155,10 @@ TEST(BenchRun, ResultReadsTheWaterLevelAtTheEnd) {
   EXPECT_NEAR(run.records.back().volume / run.incompressible_volume, 1.0, 0.03);
   const std::string text = bench::describeVolume(run);
   EXPECT_NE(text.find("level"), std::string::npos) << text;
+  // with the water's motion then, so a reader sees whether it is a settled depth
+  char rms[64];
+  std::snprintf(rms, sizeof rms, "rms speed %.3f m/s", run.records.back().rms_speed);
+  EXPECT_NE(text.find(rms), std::string::npos) << text;
 }
 
 TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
