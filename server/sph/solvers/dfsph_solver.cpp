@@ -85,9 +85,9 @@ void DfsphSolver::advance(const FrameContext& frame) {
     const int left = std::max(params.max_substeps - frame.stats.substeps, 1);
     const int steps = std::clamp(static_cast<int>(std::ceil(remaining / bound - 1e-9)), 1, left);
     const double dt = remaining / steps;
+    ++frame.stats.substeps;  // counted before it runs: the last step's XSPH reads the frame's count
     substep(frame, frame.time + done, static_cast<float>(dt), steps == 1);
     done += dt;
-    ++frame.stats.substeps;
   }
 }
 
@@ -247,7 +247,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p.velocity[i] += dt * gravity;
   if (last) {
-    velocity_constants_.xsph = xsphOfFrame(frame.scene.params.xsph_viscosity, frame.stats.substeps + 1);
+    velocity_constants_.xsph = xsphOfFrame(frame.scene.params.xsph_viscosity, frame.stats.substeps);
     const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, false, true, frame.track_surface_distance);
     dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
     p.velocity.swap(next_velocity_);
