@@ -92,18 +92,18 @@ double rmsSpeed(const sph::ParticleSet& p) {
   return std::sqrt(v2 / static_cast<double>(std::max<std::size_t>(p.size(), 1)));
 }
 
-// 10 x 10 spacings, 14 layers deep (1,400 particles, 0.3 m of water), settled: at least 2 s, then
+// nx x nx spacings, 14 layers deep (10 wide: 1,400 particles, 0.3 m of water), settled: at least 2 s, then
 // until the rms speed is below 3 mm/s, for at most 8 s of simulated time (the scalar and the
 // AVX-512 forms round differently and settle up to a second apart), and measured 1 s after that,
 // where it must still be below the 5 mm/s asked. (dfsph's conjugate gradients pass 5 mm/s at
 // about 2.3 s and read 4.6 mm/s a second later; 2.3 from 4.5 s on.)
 // One thread: the result is the same on any count (below), and a small set on two threads of a
 // busy machine spends its time waiting at the barriers.
-void expectRest(const std::string& preset) {
+void expectRest(const std::string& preset, int nx) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(1);
-  sph::Simulation sim(tank(preset, 10, 14), sph::SizeClass::Small);
-  ASSERT_EQ(sim.particles().size(), 1400u);
+  sph::Simulation sim(tank(preset, nx, 14), sph::SizeClass::Small);
+  ASSERT_EQ(sim.particles().size(), static_cast<std::size_t>(nx * nx * 14));
   for (int f = 0; f < 800 && (f < 200 || rmsSpeed(sim.particles()) >= 3e-3); ++f) sim.step();
   std::printf("%s: settled at t = %.2f s\n", preset.c_str(), sim.time());
   // Then it must stay at rest: the measurement is a second later.
@@ -122,9 +122,14 @@ void expectRest(const std::string& preset) {
   EXPECT_NEAR(r.slope_ratio, 1.0, 0.05);
 }
 
-TEST(Hydrostatic, PbfHoldsTheTankAtRest) { expectRest("pbf"); }
+TEST(Hydrostatic, PbfHoldsTheTankAtRest) { expectRest("pbf", 10); }
 
-TEST(Hydrostatic, DfsphHoldsTheTankAtRest) { expectRest("dfsph"); }
+TEST(Hydrostatic, DfsphHoldsTheTankAtRest) { expectRest("dfsph", 10); }
+
+// The wall layers' densest particles depend on the tank's width. pbf holds them within 2 % at 12
+// spacings as at 10 (1.015 rho0); dfsph does not yet: 1.027 at 12 wide and 1.024 at 14, the second
+// layer pressed onto the side guard by the vertical edges (docs/fluids.md, Known defects).
+TEST(Hydrostatic, PbfHoldsAWiderTankAtRest) { expectRest("pbf", 12); }
 
 double meanCompression(const sph::Simulation& sim) {
   const sph::ParticleSet& p = sim.particles();
