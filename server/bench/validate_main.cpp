@@ -145,14 +145,14 @@ void writeRestProfiles(const std::vector<std::pair<std::string, bench::RestProfi
   }
   std::ofstream md(dir / "hydrostatic.md");
   md << "# Water at rest: the hydrostatic tank after settling\n\n"
-     << "| preset | mean density error | wall and floor layers | rms speed (mm/s) | pressure slope / (rho0 g) | "
-        "depth / incompressible depth |\n"
-     << "|---|---|---|---|---|---|\n";
+     << "| preset | mean density error | wall and floor layers | their particles (rho / rho0) | rms speed (mm/s) | "
+        "pressure slope / (rho0 g) | depth / incompressible depth |\n"
+     << "|---|---|---|---|---|---|---|\n";
   for (const auto& [preset, r] : profiles) {
-    char row[256];
-    std::snprintf(row, sizeof row, "| %s | %s | %s | %.2f | %.3f | %s |\n", preset.c_str(),
-                  percent(r.mean_density_error).c_str(), percent(r.wall_density_error).c_str(), 1000.0 * r.rms_speed,
-                  r.pressure_slope / (rho0 * kGravity), depthRatio(r.level).c_str());
+    char row[320];
+    std::snprintf(row, sizeof row, "| %s | %s | %s | %.4f-%.4f | %.2f | %.3f | %s |\n", preset.c_str(),
+                  percent(r.mean_density_error).c_str(), percent(r.wall_density_error).c_str(), r.wall_min, r.wall_max,
+                  1000.0 * r.rms_speed, r.pressure_slope / (rho0 * kGravity), depthRatio(r.level).c_str());
     md << row;
   }
 }
@@ -264,10 +264,11 @@ int main(int argc, char** argv) {
       bench::RestProfile& r = profiles.back().second;
       r.level = bench::measureWaterLevel(p, run.simulation().scene(), box);
       std::fprintf(stderr,
-                   "[hydrostatic %s] mean density error %s, wall/floor %s, rms speed %.2f mm/s, pressure slope %.3f "
-                   "rho0 g, depth / incompressible depth %s\n",
+                   "[hydrostatic %s] mean density error %s, wall/floor %s (particles %.4f-%.4f rho0), rms speed "
+                   "%.2f mm/s, pressure slope %.3f rho0 g, depth / incompressible depth %s\n",
                    preset.c_str(), percent(r.mean_density_error).c_str(), percent(r.wall_density_error).c_str(),
-                   1000.0 * r.rms_speed, r.pressure_slope / (rho0 * kGravity), depthRatio(r.level).c_str());
+                   r.wall_min, r.wall_max, 1000.0 * r.rms_speed, r.pressure_slope / (rho0 * kGravity),
+                   depthRatio(r.level).c_str());
     }
     writeSurgeFront(fronts, dir);
     writeRestProfiles(profiles, rho0, dir);

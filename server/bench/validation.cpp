@@ -108,6 +108,7 @@ RestProfile measureRestProfile(const sph::ParticleSet& p, double rest_density, c
   double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   double side_sum = 0.0, floor_sum = 0.0;
   int side_n = 0, floor_n = 0;
+  double wall_min = std::numeric_limits<double>::infinity(), wall_max = -wall_min;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Eigen::Vector3f& x = p.position[i];
     const double depth = top - x.y();
@@ -137,7 +138,15 @@ RestProfile measureRestProfile(const sph::ParticleSet& p, double rest_density, c
                box_max.z() - x.z() < s) {
       side_sum += ratio;
       ++side_n;
+    } else {
+      continue;
     }
+    wall_min = std::min(wall_min, ratio);
+    wall_max = std::max(wall_max, ratio);
+  }
+  if (side_n + floor_n > 0) {
+    r.wall_min = wall_min;
+    r.wall_max = wall_max;
   }
   const double n = static_cast<double>(p.size());
   r.mean_density_error = error_sum / n;

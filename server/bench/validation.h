@@ -62,9 +62,12 @@ struct RestProfile {
   std::vector<DepthBin> bins;       // top to bottom
   double mean_density_error = 0.0;  // mean |rho / rho0 - 1| over all particles
   double wall_density_error = 0.0;  // the largest |mean rho / rho0 - 1| of the wall and floor layers
-  double pressure_slope = 0.0;      // least squares dp / d(depth) over the interior, Pa/m (rho0 g)
-  double rms_speed = 0.0;           // m/s
-  WaterLevel level;                 // the gauges' depth against sum m / rho0's (water_level.h)
+  // The least and the largest rho / rho0 of a particle in those layers: a layer's mean hides its
+  // densest particles (by the tank's edges).
+  double wall_min = 1.0, wall_max = 1.0;
+  double pressure_slope = 0.0;  // least squares dp / d(depth) over the interior, Pa/m (rho0 g)
+  double rms_speed = 0.0;       // m/s
+  WaterLevel level;             // the gauges' depth against sum m / rho0's (water_level.h)
 };
 // `box_min`/`box_max`: the tank; wall and floor layers are the particles within one spacing of a wall.
 RestProfile measureRestProfile(const sph::ParticleSet& particles, double rest_density, const Eigen::Vector3f& box_min,

@@ -89,6 +89,9 @@ TEST(Validation, HydrostaticLatticeHasSlopeRho0G) {
   EXPECT_NEAR(r.pressure_slope / (rho0 * 9.81), 1.0, 1e-3);
   EXPECT_NEAR(r.mean_density_error, 0.003, 1e-4);  // a tenth of the particles 3 % off
   EXPECT_GT(r.wall_density_error, 0.005) << "the dense wall layer is seen";
+  // and each of its particles: the range over the wall and floor layers below the top two
+  EXPECT_NEAR(r.wall_max, 1.03, 1e-6);
+  EXPECT_NEAR(r.wall_min, 1.0, 1e-6);
   EXPECT_DOUBLE_EQ(r.rms_speed, 0.0);
 }
 
