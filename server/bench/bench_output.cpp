@@ -124,27 +124,26 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
 }
 
 std::string describeVolume(const RunResult& run) {
-  char buf[320];
+  char buf[256];
   const double volume =
       run.incompressible_volume > 0.0 ? 100.0 * (volumeAtEnd(run) / run.incompressible_volume - 1.0) : 0.0;
   const WaterLevel& level = run.water_level;
-  int used = 0;
   if (level.gauges == 0 || level.incompressible_depth <= 0.0) {
-    used = std::snprintf(buf, sizeof buf, "volume (sum m / rho) %+.2f %%, level n/a (no gauge clear of the walls)",
-                         volume);
+    std::snprintf(buf, sizeof buf, "volume (sum m / rho) %+.2f %%, level n/a (no gauge clear of the walls)", volume);
   } else {
-    used = std::snprintf(buf, sizeof buf,
-                         "volume (sum m / rho) %+.2f %%, level %.4f m against %.4f m (%+.2f %%, %d of %d gauges wet)",
-                         volume, level.depth, level.incompressible_depth,
-                         100.0 * (level.depth / level.incompressible_depth - 1.0), level.wet, level.gauges);
+    std::snprintf(buf, sizeof buf,
+                  "volume (sum m / rho) %+.2f %%, level %.4f m against %.4f m (%+.2f %%, %d of %d gauges wet)", volume,
+                  level.depth, level.incompressible_depth, 100.0 * (level.depth / level.incompressible_depth - 1.0),
+                  level.wet, level.gauges);
   }
+  std::string text = buf;
   // The water's motion then: the level is the settled depth only once the water is at rest (a dam
   // break still sloshes at 9 s, and its level there differs from the settled one).
-  if (!run.records.empty() && used > 0 && static_cast<std::size_t>(used) < sizeof buf) {
-    std::snprintf(buf + used, sizeof buf - static_cast<std::size_t>(used), ", rms speed %.3f m/s",
-                  run.records.back().rms_speed);
+  if (!run.records.empty()) {
+    std::snprintf(buf, sizeof buf, ", rms speed %.3f m/s", run.records.back().rms_speed);
+    text += buf;
   }
-  return buf;
+  return text;
 }
 
 std::string summaryText(const RunResult& run, const Summary& s) {
