@@ -55,12 +55,23 @@ inline bool collideCylinder(const Cylinder& cylinder, float particle_radius, Vec
   return true;
 }
 
+// How near a particle's centre may come to the box's floor (its lowest face) and to every other
+// face and obstacle. One value for all of them (the thesis's particle radius, pbf's contact) converts
+// implicitly; dfsph holds its floor further off than its sides (incompressible_setup.cpp).
+struct WallReach {
+  float floor = 0.0f;
+  float sides = 0.0f;
+  WallReach() = default;
+  WallReach(float every_wall) : floor(every_wall), sides(every_wall) {}  // NOLINT(google-explicit-constructor)
+  WallReach(float floor_reach, float side_reach) : floor(floor_reach), sides(side_reach) {}
+};
+
 // Inside of the axis-aligned box, eqs. (3.29)-(3.30), with wall velocities for moving walls.
-inline bool collideBox(const BoxState& box, float particle_radius, Vec3& x, Vec3& u) {
+inline bool collideBox(const BoxState& box, const WallReach& reach, Vec3& x, Vec3& u) {
   bool hit = false;
   for (int a = 0; a < 3; ++a) {
-    const float lo = box.min[a] + particle_radius;
-    const float hi = box.max[a] - particle_radius;
+    const float lo = box.min[a] + (a == 1 ? reach.floor : reach.sides);
+    const float hi = box.max[a] - reach.sides;
     if (x[a] < lo) {
       // Contact point on the min face (3.29); normal +axis. Relative to the wall's own velocity.
       x[a] = lo;
@@ -77,10 +88,10 @@ inline bool collideBox(const BoxState& box, float particle_radius, Vec3& x, Vec3
 
 // Every boundary in turn: the obstacles, then the box, so that whatever the obstacles did the
 // particle ends inside the box.
-inline void collideBoundary(const Boundary& boundary, const BoxState& box, float particle_radius, Vec3& x, Vec3& u) {
-  for (const Sphere& s : boundary.spheres) collideSphere(s, particle_radius, x, u);
-  for (const Cylinder& c : boundary.cylinders) collideCylinder(c, particle_radius, x, u);
-  collideBox(box, particle_radius, x, u);
+inline void collideBoundary(const Boundary& boundary, const BoxState& box, const WallReach& reach, Vec3& x, Vec3& u) {
+  for (const Sphere& s : boundary.spheres) collideSphere(s, reach.sides, x, u);
+  for (const Cylinder& c : boundary.cylinders) collideCylinder(c, reach.sides, x, u);
+  collideBox(box, reach, x, u);
 }
 
 }  // namespace sph

@@ -127,6 +127,26 @@ TEST(CollideBox, MovingWallDragsParticleAlong) {
   EXPECT_EQ(u2.x(), 0.9f);
 }
 
+// dfsph keeps its particles further off the floor than off the other faces (incompressible_setup.cpp).
+TEST(CollideBox, FloorReachAppliesToTheLowestFaceAlone) {
+  const sph::BoxState b = unitBox();
+  const sph::WallReach reach(0.04f, 0.03f);
+  Vec3 x(-0.1f, -0.1f, 0.9f);
+  Vec3 u(-1.0f, -1.0f, 1.0f);
+  ASSERT_TRUE(sph::collideBox(b, reach, x, u));
+  EXPECT_EQ(x, Vec3(0.03f, 0.04f, 0.8f - 0.03f));
+  EXPECT_EQ(u, Vec3::Zero());
+  Vec3 top(0.5f, 0.6f, 0.4f);
+  ASSERT_TRUE(sph::collideBox(b, reach, top, u));
+  EXPECT_EQ(top.y(), 0.5f - 0.03f);  // the roof is a side
+  // Obstacles take the sides' reach.
+  sph::Boundary boundary;
+  boundary.spheres.push_back(sph::Sphere{Eigen::Vector3d(0.5, 0.25, 0.4), 0.1});
+  Vec3 on_sphere(0.5f, 0.36f, 0.4f);
+  sph::collideBoundary(boundary, b, reach, on_sphere, u);
+  EXPECT_NEAR(on_sphere.y(), 0.25f + 0.1f + 0.03f, 1e-6f);
+}
+
 TEST(CollideBox, NoContactLeavesParticleUnchanged) {
   const sph::BoxState b = unitBox();
   Vec3 x(0.5f, 0.25f, 0.4f);

@@ -94,12 +94,7 @@ void DfsphSolver::advance(const FrameContext& frame) {
 void DfsphSolver::placeFresh(const FrameContext& frame) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
-  fresh_.reserve(p.capacity());
-  fresh_.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.placed[i] == kPlacedThisFrame) fresh_.push_back(static_cast<std::uint32_t>(i));
-  }
-  if (fresh_.empty()) return;
+  if (std::find(p.placed.begin(), p.placed.end(), kPlacedThisFrame) == p.placed.end()) return;
   const auto t = std::chrono::steady_clock::now();
   for (auto* v : {&place_lambda_, &place_lambda_step_, &density_at_start_}) v->reserve(p.capacity());
   place_lambda_.assign(n, 0.0f);
@@ -114,17 +109,22 @@ void DfsphSolver::placeFresh(const FrameContext& frame) {
   frame.grid.build(p);
   PbfArrays a = pbfArraysOf(p, place_lambda_, place_lambda_step_, place_wall_grad_);
   const PbfPassForms forms = dispatchedPbfPassForms();
-  // The placements' densities where they now sit (a child carries its parent's), from a constraint
-  // pass over them alone; its multipliers are discarded, the placement starts from zero.
+  // The placements' and their neighbours' densities where they now sit (a child carries its
+  // parent's), from a constraint pass over them alone; its multipliers are discarded, the
+  // placement starts from zero. The neighbours are watched as well as the placements: dfsph would
+  // turn any compression left into speed, and a merged particle can press an unmerged neighbour
+  // it lands beside (a SMALL one on a side wall's guard read 1.19 rho0) while itself within the
+  // limit. (pbf's own constraint passes watch every particle.)
+  const std::span<const std::uint32_t> watched = placement_.watched(p, frame.grid);
   a.position = p.position.data()->data();
-  a.only = fresh_.data();
-  a.only_count = fresh_.size();
+  a.only = watched.data();
+  a.only_count = watched.size();
   forms.lambda(a, placement_constants_, frame.grid);
   a.only = nullptr;
   a.only_count = 0;
   std::fill(place_lambda_.begin(), place_lambda_.end(), 0.0f);
   frame.stats.placement_iterations +=
-      placement_.place(p, frame.grid, a, placement_constants_, forms, density_at_start_, place_next_position_,
+      placement_.place(p, frame.grid, watched, a, placement_constants_, forms, density_at_start_, place_next_position_,
                        kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);
 }

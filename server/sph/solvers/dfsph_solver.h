@@ -58,7 +58,6 @@ class DfsphSolver : public FluidSolver {
   LocalPlacement placement_;
   std::vector<Vec3> place_next_position_, place_wall_grad_;
   std::vector<float> place_lambda_, place_lambda_step_, density_at_start_;
-  std::vector<std::uint32_t> fresh_;
 };
 
 }  // namespace sph

@@ -31,12 +31,15 @@ double latticeGradSquared(const CubicKernel& k, double spacing) {
 // The nearest a particle's centre may come to a wall, in spacings. Settled water's wall layers
 // rest on it (the one-sided walls hold the water only by compressing it), and the closer they
 // sit, the more of the water's volume the walls swallow: with 0.3 both solvers' settled water
-// stood 2-3 % below the depth its mass fills at rho0 (docs/performance.md). pbf moves particles
-// by position and holds them at half a spacing, where a lattice beside a wall reads rho0. dfsph
+// stood 2-3 % below the depth its mass fills at rho0 (docs/fluids.md). pbf moves particles by
+// position and holds them at half a spacing, where a lattice beside a wall reads rho0. dfsph
 // moves them by velocity and piles them against a guard there (its tank's wall layers at 1.07
-// rho0, against the 1.02 allowed); 0.4 keeps them within it.
+// rho0, against the 1.02 allowed). Its floor guard at 0.4 keeps the floor layer within that; the
+// side walls and obstacles need 0.3: at 0.4 the layer above the floor, pressed sideways onto the
+// guard beside a vertical edge, read up to 1.027 rho0 in tanks wider than the tests'.
 constexpr float kPbfContact = 0.5f;
-constexpr float kDfsphContact = 0.4f;
+constexpr float kDfsphFloorContact = 0.4f;
+constexpr float kDfsphSideContact = 0.3f;
 
 }  // namespace
 
@@ -47,7 +50,10 @@ IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
   for (int c = 0; c < kSizeClassCount; ++c) {
     const auto cu = static_cast<std::size_t>(c);
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
-    s.contact[cu] = (scene.params.solver == Solver::kPbf ? kPbfContact : kDfsphContact) * s.spacing[cu];
+    const float spacing = s.spacing[cu];
+    s.contact[cu] = scene.params.solver == Solver::kPbf
+                        ? WallReach(kPbfContact * spacing)
+                        : WallReach(kDfsphFloorContact * spacing, kDfsphSideContact * spacing);
     s.lattice_grad_sq[cu] = s.kernels.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
   }
   s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels.classes, s.spacing);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sph/boundary_volume.h"
+#include "sph/collision.h"
 #include "sph/kernels.h"
 #include "sph/particles.h"
 #include "sph/scene.h"
@@ -20,10 +21,11 @@ namespace sph {
 struct IncompressibleSetup {
   PairKernels kernels;                           // each class's kernel and particle mass
   std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
-  // The nearest a particle's centre may come to a wall: pbf half a spacing, dfsph 0.4 spacings
-  // (incompressible_setup.cpp). The one-sided walls hold settled water only by compressing it, so
-  // its wall layers come to rest on this distance, not where the walls' density would put them.
-  std::array<float, kSizeClassCount> contact{};
+  // The nearest a particle's centre may come to the floor and to the other walls: pbf half a
+  // spacing to all, dfsph 0.4 spacings to the floor and 0.3 to the rest (incompressible_setup.cpp).
+  // The one-sided walls hold settled water only by compressing it, so its wall layers come to rest
+  // on these distances, not where the walls' density would put them.
+  std::array<WallReach, kSizeClassCount> contact{};
   // On a resting lattice of the class: sum_j m_j |grad W_ij|^2 (the gradient sum itself vanishes
   // by symmetry).
   std::array<double, kSizeClassCount> lattice_grad_sq{};

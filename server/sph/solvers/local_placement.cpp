@@ -66,20 +66,40 @@ PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<fl
   return a;
 }
 
-int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, PbfArrays& a, const PbfConstants& c,
-                          const PbfPassForms& forms, std::span<const float> density_at_start,
-                          std::vector<Vec3>& next_position, float limit, int max_iterations) {
+std::span<const std::uint32_t> LocalPlacement::fresh(const ParticleSet& p) {
+  fresh_.reserve(p.capacity());
+  fresh_.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.placed[i] == kPlacedThisFrame) fresh_.push_back(static_cast<std::uint32_t>(i));
+  }
+  return fresh_;
+}
+
+std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, const NeighborGrid& grid) {
+  fresh(p);
+  watched_.reserve(p.capacity());
+  watched_.assign(fresh_.begin(), fresh_.end());
+  mark_.reserve(p.capacity());
+  mark_.assign(p.size(), 0);
+  for (std::uint32_t i : fresh_) mark_[i] = 1;
+  addNeighbourhoods(grid, fresh_, mark_, watched_);
+  std::sort(watched_.begin(), watched_.end());
+  return watched_;
+}
+
+int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates,
+                          PbfArrays& a, const PbfConstants& c, const PbfPassForms& forms,
+                          std::span<const float> density_at_start, std::vector<Vec3>& next_position, float limit,
+                          int max_iterations) {
   const std::size_t n = p.size();
   const float rho0 = c.rest_density;
   const std::size_t room = p.capacity();
   for (auto* v : {&placed_, &updated_, &moved_}) v->reserve(room);
   mark_.reserve(room);
-  // The fresh placements compressed beyond the limit.
+  // The candidates compressed beyond the limit.
   placed_.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.placed[i] == kPlacedThisFrame && placementExcess(p, density_at_start, rho0, i) > limit) {
-      placed_.push_back(static_cast<std::uint32_t>(i));
-    }
+  for (std::uint32_t i : candidates) {
+    if (placementExcess(p, density_at_start, rho0, i) > limit) placed_.push_back(i);
   }
   if (placed_.empty()) return 0;
   // Updated: the placements and their neighbours; moved: those and theirs. Every other particle

@@ -30,6 +30,7 @@
 #include <cstdint>
 
 #include "sph/boundary_volume.h"
+#include "sph/collision.h"
 #include "sph/kernels.h"
 #include "sph/neighbor_grid.h"
 #include "sph/solvers/pair_kernels.h"
@@ -65,7 +66,7 @@ struct PbfConstants {
   float tensile_k = 0.0f;
   float omega = 1.0f;
   int tensile_n = 4;
-  std::array<float, kSizeClassCount> contact{};  // nearest a centre may come to a wall
+  std::array<WallReach, kSizeClassCount> contact{};  // nearest a centre may come to the walls
   const BoundaryVolume* boundary = nullptr;
   const Boundary* obstacles = nullptr;
   BoxState box;

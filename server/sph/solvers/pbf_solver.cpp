@@ -171,7 +171,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   }
   frame.stats.iterations += iterations;
   frame.stats.placement_iterations +=
-      placement_.place(p, frame.grid, a, constants_, forms, density_at_start_, next_position_,
+      placement_.place(p, frame.grid, placement_.fresh(p), a, constants_, forms, density_at_start_, next_position_,
                        kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);
 
