@@ -247,9 +247,9 @@ TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
 
 // dfsph, from rest (0.016 m/s after 150 frames): without the placement the split step threw the
 // pool to 3.5 m/s rms. With it the split raises the largest density error by 1-2 % (the issue's
-// 5 % holds) but still sets the pool moving, 0.07 m/s, and the merge adds 0.05-0.06 m/s: more
-// than pbf's 0.03 (docs/fluids.md), so the kick's bound here is 0.1 m/s. The frames after: as pbf's
-// (the pool without a split about 0.01 m/s).
+// 5 % holds) but still sets the pool moving, 0.06 m/s, and the merge adds 0.03 m/s (0.05 before
+// the placement watched its neighbours): more than pbf's (docs/fluids.md), so the kick's bound
+// here is 0.1 m/s. The frames after: as pbf's (the pool without a split about 0.01 m/s).
 TEST(SplitMerge, SplittingOrMergingARestingDfsphPoolDoesNotThrowIt) {
   expectSplittingOrMergingARestingPoolDoesNotKickIt("dfsph", {150, 0.1, 0.05f, 0.2});
 }
