@@ -94,7 +94,8 @@ void DfsphSolver::advance(const FrameContext& frame) {
 void DfsphSolver::placeFresh(const FrameContext& frame) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
-  if (std::find(p.placed.begin(), p.placed.end(), kPlacedThisFrame) == p.placed.end()) return;
+  const std::span<const std::uint32_t> fresh = placement_.fresh(p);
+  if (fresh.empty()) return;
   const auto t = std::chrono::steady_clock::now();
   for (auto* v : {&place_lambda_, &place_lambda_step_, &density_at_start_}) v->reserve(p.capacity());
   place_lambda_.assign(n, 0.0f);
@@ -115,7 +116,7 @@ void DfsphSolver::placeFresh(const FrameContext& frame) {
   // turn any compression left into speed, and a merged particle can press an unmerged neighbour
   // it lands beside (a SMALL one on a side wall's guard read 1.19 rho0) while itself within the
   // limit. (pbf's own constraint passes watch every particle.)
-  const std::span<const std::uint32_t> watched = placement_.watched(p, frame.grid);
+  const std::span<const std::uint32_t> watched = placement_.watched(p, fresh, frame.grid);
   a.position = p.position.data()->data();
   a.only = watched.data();
   a.only_count = watched.size();

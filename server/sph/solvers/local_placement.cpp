@@ -75,14 +75,14 @@ std::span<const std::uint32_t> LocalPlacement::fresh(const ParticleSet& p) {
   return fresh_;
 }
 
-std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, const NeighborGrid& grid) {
-  fresh(p);
+std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
+                                                       const NeighborGrid& grid) {
   watched_.reserve(p.capacity());
-  watched_.assign(fresh_.begin(), fresh_.end());
+  watched_.assign(fresh.begin(), fresh.end());
   mark_.reserve(p.capacity());
   mark_.assign(p.size(), 0);
-  for (std::uint32_t i : fresh_) mark_[i] = 1;
-  addNeighbourhoods(grid, fresh_, mark_, watched_);
+  for (std::uint32_t i : fresh) mark_[i] = 1;
+  addNeighbourhoods(grid, fresh, mark_, watched_);
   std::sort(watched_.begin(), watched_.end());
   return watched_;
 }

@@ -41,8 +41,9 @@ class LocalPlacement {
  public:
   // The particles marked kPlacedThisFrame, in order.
   std::span<const std::uint32_t> fresh(const ParticleSet& p);
-  // Those and their neighbours, sorted.
-  std::span<const std::uint32_t> watched(const ParticleSet& p, const NeighborGrid& grid);
+  // fresh(p) and their neighbours in `grid` (built on p), sorted.
+  std::span<const std::uint32_t> watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
+                                         const NeighborGrid& grid);
 
   // Moves the `candidates` (fresh() or watched(), whose densities the caller's last constraint
   // pass measured) whose density exceeds max(density_at_start, rho0) by more than `limit`
