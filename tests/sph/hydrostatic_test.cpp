@@ -37,7 +37,7 @@ struct Rest {
   double mean_density_error = 0.0;        // mean |rho / rho0 - 1| below the surface layers
   double wall_min = 1.0, wall_max = 1.0;  // rho / rho0 of the particles at walls and floor
   double rms_speed = 0.0;
-  double slope_ratio = 0.0;  // -dp/dy / (rho0 g), interior particles
+  double slope_ratio = 0.0;  // -dp/dy / (rho0 g) in the interior, the mean over the measured second
 };
 
 Rest measure(const sph::Simulation& sim) {
@@ -53,9 +53,6 @@ Rest measure(const sph::Simulation& sim) {
   out.wall_max = -1e9;
   double v2 = 0.0, error = 0.0;
   int below = 0;
-  // Least squares p = a + b y over the interior: farther than a support from walls, floor and surface.
-  double sy = 0.0, sp = 0.0, syy = 0.0, syp = 0.0;
-  int interior = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const sph::Vec3& x = p.position[i];
     v2 += p.velocity[i].squaredNorm();
@@ -70,20 +67,36 @@ Rest measure(const sph::Simulation& sim) {
       out.wall_min = std::min(out.wall_min, rho);
       out.wall_max = std::max(out.wall_max, rho);
     }
-    if (side > 2.5 * s && floor > 2.5 * s && depth > 2.5 * s) {
-      ++interior;
-      sy += x.y();
-      sp += p.pressure[i];
-      syy += static_cast<double>(x.y()) * x.y();
-      syp += static_cast<double>(x.y()) * p.pressure[i];
-    }
   }
   out.rms_speed = std::sqrt(v2 / static_cast<double>(p.size()));
   out.mean_density_error = error / std::max(below, 1);
-  const double slope = (syp - sy * sp / interior) / (syy - sy * sy / interior);
-  out.slope_ratio = -slope / (rho0 * std::abs(params.gravity));
-  EXPECT_GT(interior, 20);
   return out;
+}
+
+// -dp/dy / (rho0 g) in the interior: the least-squares slope p = a + b y over the particles
+// farther than a support from walls, floor and surface, each with its own pressure.
+double pressureSlope(const sph::Simulation& sim) {
+  const sph::ParticleSet& p = sim.particles();
+  const double rho0 = sim.params().rest_density;
+  const double s = std::cbrt(sim.params().mass_small / rho0);
+  const sph::BoxState box = sim.boxNow();
+  float top = -1e9f;
+  for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].y());
+  double sy = 0.0, sp = 0.0, syy = 0.0, syp = 0.0;
+  int interior = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const sph::Vec3& x = p.position[i];
+    const double side = std::min({x.x() - box.min.x(), box.max.x() - x.x(), x.z() - box.min.z(), box.max.z() - x.z()});
+    if (side <= 2.5 * s || x.y() - box.min.y() <= 2.5 * s || top - x.y() <= 2.5 * s) continue;
+    ++interior;
+    sy += x.y();
+    sp += p.pressure[i];
+    syy += static_cast<double>(x.y()) * x.y();
+    syp += static_cast<double>(x.y()) * p.pressure[i];
+  }
+  EXPECT_GT(interior, 20);
+  const double slope = (syp - sy * sp / interior) / (syy - sy * sy / interior);
+  return -slope / (rho0 * std::abs(sim.params().gravity));
 }
 
 double rmsSpeed(const sph::ParticleSet& p) {
@@ -106,10 +119,19 @@ void expectRest(const std::string& preset, int nx) {
   ASSERT_EQ(sim.particles().size(), static_cast<std::size_t>(nx * nx * 14));
   for (int f = 0; f < 800 && (f < 200 || rmsSpeed(sim.particles()) >= 3e-3); ++f) sim.step();
   std::printf("%s: settled at t = %.2f s\n", preset.c_str(), sim.time());
-  // Then it must stay at rest: the measurement is a second later.
-  for (int f = 0; f < 100; ++f) sim.step();
+  // Then it must stay at rest: the measurement is a second later, the pressure's slope its mean
+  // over that second (every fifth frame). A particle's pressure is one step's multiplier: at rest
+  // the slope of a single frame scattered 0.90-1.01 from frame to frame in dfsph's tank (0.94-1.01
+  // with the interior's bounds moved by half a spacing). The SPH-interpolated pressure at gauges
+  // scatters less but reads pbf 3-7 % steeper than its particles do (docs/fluids.md).
+  double slopes = 0.0;
+  for (int f = 1; f <= 100; ++f) {
+    sim.step();
+    if (f % 5 == 0) slopes += pressureSlope(sim);
+  }
   omp_set_num_threads(previous);
-  const Rest r = measure(sim);
+  Rest r = measure(sim);
+  r.slope_ratio = slopes / 20.0;
   std::printf("%s: mean |rho/rho0 - 1| %.5f, walls and floor [%.4f, %.4f] rho0, rms %.5f m/s, slope %.4f rho0 g\n",
               preset.c_str(), r.mean_density_error, r.wall_min, r.wall_max, r.rms_speed, r.slope_ratio);
   SCOPED_TRACE(::testing::Message() << preset << ": mean |rho/rho0 - 1| " << r.mean_density_error << ", walls ["
@@ -129,7 +151,8 @@ TEST(Hydrostatic, DfsphHoldsTheTankAtRest) { expectRest("dfsph", 10); }
 // The wall layers' densest particles depend on the tank's width: the layer above the floor pressed
 // sideways onto the guard beside a vertical edge. 12 spacings wide pbf holds them within 2 % as at
 // 10 (1.015 rho0); dfsph did so only at 10 (1.027 at 12) until its side walls' guard moved from
-// 0.4 to 0.3 spacings (incompressible_setup.cpp; 1.007 now).
+// 0.4 to 0.3 spacings (incompressible_setup.cpp; 1.007, and 1.002 since its solve holds the floor
+// layer itself, floor_contact.h).
 TEST(Hydrostatic, PbfHoldsAWiderTankAtRest) { expectRest("pbf", 12); }
 
 TEST(Hydrostatic, DfsphHoldsAWiderTankAtRest) { expectRest("dfsph", 12); }

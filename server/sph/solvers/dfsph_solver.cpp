@@ -136,6 +136,8 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   const DfsphPassForms forms = passForms();
   const float rho0 = constants_.rest_density;
   const SimParams& params = frame.scene.params;
+  // The floor holds the particles on it, and the constant-density solve knows (floor_contact.h).
+  if (density_target) floor_.find(p, constants_.box, setup_.contact, setup_.spacing, dt);
   // What the velocities alone would do: the density after the step (rho + dt D(v)), or its rate.
   arrays_.field = p.velocity.data()->data();
   arrays_.with_wall_rate = true;
@@ -167,6 +169,7 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   bool accelerated = false;  // whether the iterations turned to conjugate gradients yet
   while (iteration < params.max_iterations) {
     forms.acceleration(arrays_, constants_, frame.grid);
+    if (density_target) floor_.hold(acceleration_);
     forms.change(arrays_, constants_, frame.grid);
     if (density_target && params.conjugate_gradients && !accelerated && iteration == kJacobiIterations) {
       // Jacobi removes a step's new, local error in a few iterations, but the smooth rest only at
@@ -191,11 +194,13 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
     if (error / count <= tolerance && iteration >= least) break;
   }
   forms.acceleration(arrays_, constants_, frame.grid);
+  if (density_target) floor_.hold(acceleration_);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] += dt * acceleration_[i];
     warm[i] = stiffness_[i];
   }
+  if (density_target) floor_.relaxSlip(p);
   return iteration;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sph/solvers/dfsph_passes.h"
+#include "sph/solvers/floor_contact.h"
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
@@ -54,6 +55,7 @@ class DfsphSolver : public FluidSolver {
   std::vector<std::uint8_t> active_;
   std::vector<double> sum_partials_;  // orderedSums' scratch
   PairVectorStore pair_grad_;         // DfsphArrays::pair_grad
+  FloorContact floor_;                // the constant-density solve's
   PbfConstants placement_constants_;
   LocalPlacement placement_;
   std::vector<Vec3> place_next_position_, place_wall_grad_;

@@ -33,12 +33,13 @@ double latticeGradSquared(const CubicKernel& k, double spacing) {
 // sit, the more of the water's volume the walls swallow: with 0.3 both solvers' settled water
 // stood 2-3 % below the depth its mass fills at rho0 (docs/fluids.md). pbf moves particles by
 // position and holds them at half a spacing, where a lattice beside a wall reads rho0. dfsph
-// moves them by velocity and piles them against a guard there (its tank's wall layers at 1.07
-// rho0, against the 1.02 allowed). Its floor guard at 0.4 keeps the floor layer within that; the
-// side walls and obstacles need 0.3: at 0.4 the layer above the floor, pressed sideways onto the
-// guard beside a vertical edge, read up to 1.027 rho0 in tanks wider than the tests'.
+// moves them by velocity: against a guard there its tank's wall layers piled up to 1.07 rho0
+// (the 1.02 allowed), so its floor stood at 0.4 until its constant-density solve held the floor
+// layer itself (floor_contact.h); now at half a spacing, within 0.5 % of rho0. The side walls and
+// obstacles need 0.3: at 0.4 the layer above the floor, pressed sideways onto the guard beside a
+// vertical edge, read up to 1.027 rho0 in tanks wider than the tests'.
 constexpr float kPbfContact = 0.5f;
-constexpr float kDfsphFloorContact = 0.4f;
+constexpr float kDfsphFloorContact = 0.5f;
 constexpr float kDfsphSideContact = 0.3f;
 
 }  // namespace

@@ -22,7 +22,7 @@ struct IncompressibleSetup {
   PairKernels kernels;                           // each class's kernel and particle mass
   std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
   // The nearest a particle's centre may come to the floor and to the other walls: pbf half a
-  // spacing to all, dfsph 0.4 spacings to the floor and 0.3 to the rest (incompressible_setup.cpp).
+  // spacing to all, dfsph half a spacing to the floor and 0.3 to the rest (incompressible_setup.cpp).
   // The one-sided walls hold settled water only by compressing it, so its wall layers come to rest
   // on these distances, not where the walls' density would put them.
   std::array<WallReach, kSizeClassCount> contact{};
