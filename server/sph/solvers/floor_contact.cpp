@@ -56,29 +56,18 @@ void FloorContact::find(ParticleSet& p, const BoxState& box, const std::array<Wa
   }
 }
 
-void FloorContact::hold(std::vector<Vec3>& acceleration) const {
-  const std::size_t n = held_.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t axes = held_[i];
-    if (axes == 0) continue;
-    for (int a = 0; a < 3; ++a) {
-      if (axes & (1u << a)) acceleration[i][a] = 0.0f;
-    }
-  }
-}
+void FloorContact::hold(std::vector<Vec3>& acceleration) const { scaleHeld(acceleration, 0.0f, 1.0f); }
 
-void FloorContact::relaxSlip(ParticleSet& p) const {
-  const float keep = 1.0f - kSlipLoss;
+// The walls move only along their normals: along the floor they stand still.
+void FloorContact::relaxSlip(ParticleSet& p) const { scaleHeld(p.velocity, 1.0f, 1.0f - kSlipLoss); }
+
+void FloorContact::scaleHeld(std::vector<Vec3>& v, float along_held, float along_free) const {
   const std::size_t n = held_.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t axes = held_[i];
     if (axes == 0) continue;
-    // The walls move only along their normals: along the floor they stand still.
-    for (int a = 0; a < 3; ++a) {
-      if (!(axes & (1u << a))) p.velocity[i][a] *= keep;
-    }
+    for (int a = 0; a < 3; ++a) v[i][a] *= (axes & (1u << a)) ? along_held : along_free;
   }
 }
 

@@ -50,6 +50,9 @@ class FloorContact {
   void relaxSlip(ParticleSet& p) const;
 
  private:
+  // Scales each held particle's components along the axes that hold it and along the others.
+  void scaleHeld(std::vector<Vec3>& v, float along_held, float along_free) const;
+
   // Per particle: bit a, held along axis a; 0 if free.
   std::vector<std::uint8_t> held_;
 };
