@@ -123,7 +123,7 @@ void expectRest(const std::string& preset, int nx) {
   // over that second (every fifth frame). A particle's pressure is one step's multiplier: at rest
   // the slope of a single frame scattered 0.90-1.01 from frame to frame in dfsph's tank (0.94-1.01
   // with the interior's bounds moved by half a spacing). The SPH-interpolated pressure at gauges
-  // scatters less but reads pbf 3-7 % steeper than its particles do (docs/fluids.md).
+  // read pbf's slope 1.02-1.07 where its particles read 1.00-1.03 (docs/fluids.md).
   double slopes = 0.0;
   for (int f = 1; f <= 100; ++f) {
     sim.step();
