@@ -69,7 +69,7 @@ FrontRun runSurgeFront(const sph::Scene& scene, const std::string& method, const
 
 std::string percent(double x) {
   char text[32];
-  std::snprintf(text, sizeof text, std::isfinite(x) ? "%.1f %%" : "n/a", 100.0 * x);
+  std::snprintf(text, sizeof text, std::isfinite(x) ? "%.2f %%" : "n/a", 100.0 * x);
   return text;
 }
 
@@ -101,7 +101,7 @@ void writeSurgeFront(const std::vector<FrontRun>& runs, const fs::path& dir) {
     char max_density[32] = "n/a";
     if (std::isfinite(r.column.max_density))
       std::snprintf(max_density, sizeof max_density, "%.3f", r.column.max_density);
-    std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f | %s | %s | %s | %.2f | %s |\n", r.preset.c_str(),
+    std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f | %s | %s | %s | %.3f | %s |\n", r.preset.c_str(),
                   r.method.c_str(), r.column.width, r.column.height / r.column.width,
                   percent(r.column.mean_compression).c_str(), max_density, percent(r.error).c_str(), r.shift,
                   percent(r.shifted_error).c_str());
@@ -245,7 +245,7 @@ int main(int argc, char** argv) {
         const FrontRun& r = fronts.back();
         std::fprintf(stderr,
                      "[martin_moyce %s/%s] released at %.3f a high, %s mean compression; max front error (T <= 3) "
-                     "%s, with a shift of %.2f: %s\n",
+                     "%s, with a shift of %.3f: %s\n",
                      preset.c_str(), method.c_str(), r.column.height / r.column.width,
                      percent(r.column.mean_compression).c_str(), percent(r.error).c_str(), r.shift,
                      percent(r.shifted_error).c_str());

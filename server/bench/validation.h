@@ -46,7 +46,7 @@ double frontZAt(const std::vector<FrontPoint>& curve, double T);
 double maxRelativeFrontError(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
                              double t_max, double shift);
 
-// The shift in [0, max_shift] (steps of 0.01) with the smallest maximum error; `error` gets it.
+// The shift in [0, max_shift] (steps of 0.001) with the smallest maximum error; `error` gets it.
 double bestStartupShift(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
                         double t_max, double max_shift, double& error);
 
