@@ -66,20 +66,37 @@ struct WallReach {
   WallReach(float floor_reach, float side_reach) : floor(floor_reach), sides(side_reach) {}
 };
 
+// The planes a centre is kept between on axis a: the min face plus its reach (the floor's on the
+// vertical axis), the max face less the sides'.
+inline float guardLow(const BoxState& box, const WallReach& reach, int a) {
+  return box.min[a] + (a == 1 ? reach.floor : reach.sides);
+}
+inline float guardHigh(const BoxState& box, const WallReach& reach, int a) { return box.max[a] - reach.sides; }
+
+// Removes the part of u along axis a that moves into the min face (at_min) or the max face,
+// relative to the face's own velocity, eq. (3.32).
+inline void removeVelocityIntoFace(const BoxState& box, int a, bool at_min, Vec3& u) {
+  if (at_min) {
+    if (u[a] < box.min_velocity[a]) u[a] = box.min_velocity[a];
+  } else if (u[a] > box.max_velocity[a]) {
+    u[a] = box.max_velocity[a];
+  }
+}
+
 // Inside of the axis-aligned box, eqs. (3.29)-(3.30), with wall velocities for moving walls.
 inline bool collideBox(const BoxState& box, const WallReach& reach, Vec3& x, Vec3& u) {
   bool hit = false;
   for (int a = 0; a < 3; ++a) {
-    const float lo = box.min[a] + (a == 1 ? reach.floor : reach.sides);
-    const float hi = box.max[a] - reach.sides;
+    const float lo = guardLow(box, reach, a);
+    const float hi = guardHigh(box, reach, a);
     if (x[a] < lo) {
-      // Contact point on the min face (3.29); normal +axis. Relative to the wall's own velocity.
+      // Contact point on the min face (3.29); normal +axis.
       x[a] = lo;
-      if (u[a] < box.min_velocity[a]) u[a] = box.min_velocity[a];
+      removeVelocityIntoFace(box, a, true, u);
       hit = true;
     } else if (x[a] > hi) {
       x[a] = hi;
-      if (u[a] > box.max_velocity[a]) u[a] = box.max_velocity[a];
+      removeVelocityIntoFace(box, a, false, u);
       hit = true;
     }
   }

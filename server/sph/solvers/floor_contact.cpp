@@ -1,7 +1,5 @@
 #include "sph/solvers/floor_contact.h"
 
-#include <algorithm>
-
 namespace sph {
 
 namespace {
@@ -20,15 +18,6 @@ constexpr float kSlipLoss = 0.3f;
 
 constexpr int kFloorAxis = 1;
 
-// The velocity component along `axis` no longer into the min face (at_min) or the max face.
-void removeInto(Vec3& u, int axis, bool at_min, const BoxState& box) {
-  if (at_min) {
-    u[axis] = std::max(u[axis], box.min_velocity[axis]);
-  } else {
-    u[axis] = std::min(u[axis], box.max_velocity[axis]);
-  }
-}
-
 }  // namespace
 
 void FloorContact::find(ParticleSet& p, const BoxState& box, const std::array<WallReach, kSizeClassCount>& reach,
@@ -42,15 +31,15 @@ void FloorContact::find(ParticleSet& p, const BoxState& box, const std::array<Wa
     const float band = kBand * spacing[c];
     Vec3& u = p.velocity[i];
     const Vec3 predicted = p.position[i] + dt * u;
-    if (predicted[kFloorAxis] > box.min[kFloorAxis] + reach[c].floor + band) continue;
+    if (predicted[kFloorAxis] > guardLow(box, reach[c], kFloorAxis) + band) continue;
     std::uint8_t axes = 1u << kFloorAxis;
-    removeInto(u, kFloorAxis, true, box);
+    removeVelocityIntoFace(box, kFloorAxis, true, u);
     for (const int a : {0, 2}) {
-      const bool at_min = predicted[a] <= box.min[a] + reach[c].sides + band;
-      const bool at_max = predicted[a] >= box.max[a] - reach[c].sides - band;
+      const bool at_min = predicted[a] <= guardLow(box, reach[c], a) + band;
+      const bool at_max = predicted[a] >= guardHigh(box, reach[c], a) - band;
       if (!at_min && !at_max) continue;
       axes |= static_cast<std::uint8_t>(1u << a);
-      removeInto(u, a, at_min, box);
+      removeVelocityIntoFace(box, a, at_min, u);
     }
     held_[i] = axes;
   }
