@@ -40,14 +40,25 @@ struct Rest {
   double slope_ratio = 0.0;  // -dp/dy / (rho0 g) in the interior, the mean over the measured second
 };
 
+// The highest particle's centre: the surface the measurements keep their distance from.
+float highest(const sph::ParticleSet& p) {
+  float top = -1e9f;
+  for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].y());
+  return top;
+}
+
+// How far x is from the nearest side wall.
+double sideDistance(const sph::BoxState& box, const sph::Vec3& x) {
+  return std::min({x.x() - box.min.x(), box.max.x() - x.x(), x.z() - box.min.z(), box.max.z() - x.z()});
+}
+
 Rest measure(const sph::Simulation& sim) {
   const sph::ParticleSet& p = sim.particles();
   const sph::SimParams& params = sim.params();
   const double rho0 = params.rest_density;
   const double s = std::cbrt(params.mass_small / rho0);
   const sph::BoxState box = sim.boxNow();
-  float top = -1e9f;
-  for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].y());
+  const float top = highest(p);
   Rest out;
   out.wall_min = 1e9;
   out.wall_max = -1e9;
@@ -56,7 +67,7 @@ Rest measure(const sph::Simulation& sim) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const sph::Vec3& x = p.position[i];
     v2 += p.velocity[i].squaredNorm();
-    const double side = std::min({x.x() - box.min.x(), box.max.x() - x.x(), x.z() - box.min.z(), box.max.z() - x.z()});
+    const double side = sideDistance(box, x);
     const double floor = x.y() - box.min.y();
     const double depth = top - x.y();
     const double rho = p.density[i] / rho0;
@@ -80,13 +91,12 @@ double pressureSlope(const sph::Simulation& sim) {
   const double rho0 = sim.params().rest_density;
   const double s = std::cbrt(sim.params().mass_small / rho0);
   const sph::BoxState box = sim.boxNow();
-  float top = -1e9f;
-  for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].y());
+  const float top = highest(p);
   double sy = 0.0, sp = 0.0, syy = 0.0, syp = 0.0;
   int interior = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const sph::Vec3& x = p.position[i];
-    const double side = std::min({x.x() - box.min.x(), box.max.x() - x.x(), x.z() - box.min.z(), box.max.z() - x.z()});
+    const double side = sideDistance(box, x);
     if (side <= 2.5 * s || x.y() - box.min.y() <= 2.5 * s || top - x.y() <= 2.5 * s) continue;
     ++interior;
     sy += x.y();
