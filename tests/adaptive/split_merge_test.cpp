@@ -234,8 +234,8 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   expectSettlesAgain();
 }
 
-// pbf: the bound, the split raises the largest density error by at most 5 % (2.2 %; the
-// constraint iterates on while placed particles are compressed: 12 % without that), and no kick.
+// pbf: the bound, the split raises the largest density error by at most 5 % (2-3 %; the
+// placement moves the compressed children before the constraint: 12 % without it), and no kick.
 // Before the placement rule the split step gave 0.9 m/s rms and the pool still moved at 0.24 m/s
 // 50 frames later (a LARGE pool left alone: about 0.03 m/s); before the neighbours of a merge
 // counted as placed the merge step gave 0.33 m/s. In the frames after a whole split or merge the

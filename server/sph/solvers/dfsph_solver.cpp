@@ -92,41 +92,12 @@ void DfsphSolver::advance(const FrameContext& frame) {
 }
 
 void DfsphSolver::placeFresh(const FrameContext& frame) {
-  ParticleSet& p = frame.particles;
-  const std::size_t n = p.size();
-  const std::span<const std::uint32_t> fresh = placement_.fresh(p);
-  if (fresh.empty()) return;
   const auto t = std::chrono::steady_clock::now();
-  for (auto* v : {&place_lambda_, &place_lambda_step_, &density_at_start_}) v->reserve(p.capacity());
-  place_lambda_.assign(n, 0.0f);
-  place_lambda_step_.assign(n, 0.0f);
-  density_at_start_.assign(p.density.begin(), p.density.end());
-  for (auto* v : {&place_next_position_, &place_wall_grad_}) {
-    v->reserve(p.capacity());
-    v->resize(n);
-  }
   placement_constants_.box = frame.scene.boundary.stateAt(frame.time);
   placement_constants_.obstacles = &frame.scene.boundary;
-  frame.grid.build(p);
-  PbfArrays a = pbfArraysOf(p, place_lambda_, place_lambda_step_, place_wall_grad_);
-  const PbfPassForms forms = dispatchedPbfPassForms();
-  // The placements' and their neighbours' densities where they now sit (a child carries its
-  // parent's), from a constraint pass over them alone; its multipliers are discarded, the
-  // placement starts from zero. The neighbours are watched as well as the placements: dfsph would
-  // turn any compression left into speed, and a merged particle can press an unmerged neighbour
-  // it lands beside (a SMALL one on a side wall's guard read 1.19 rho0) while itself within the
-  // limit. (pbf's own constraint passes watch every particle.)
-  const std::span<const std::uint32_t> watched = placement_.watched(p, fresh, frame.grid);
-  a.position = p.position.data()->data();
-  a.only = watched.data();
-  a.only_count = watched.size();
-  forms.lambda(a, placement_constants_, frame.grid);
-  a.only = nullptr;
-  a.only_count = 0;
-  std::fill(place_lambda_.begin(), place_lambda_.end(), 0.0f);
   frame.stats.placement_iterations +=
-      placement_.place(p, frame.grid, watched, a, placement_constants_, forms, density_at_start_, place_next_position_,
-                       kPlacedCompression * constants_.rest_density, kPlacedIterations);
+      placement_.placeFresh(frame.particles, frame.grid, LocalPlacement::Grid::kBuild, placement_constants_,
+                            kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);
 }
 

@@ -58,8 +58,6 @@ class DfsphSolver : public FluidSolver {
   FloorContact floor_;                // the constant-density solve's
   PbfConstants placement_constants_;
   LocalPlacement placement_;
-  std::vector<Vec3> place_next_position_, place_wall_grad_;
-  std::vector<float> place_lambda_, place_lambda_step_, density_at_start_;
 };
 
 }  // namespace sph

@@ -87,10 +87,34 @@ std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, std
   return watched_;
 }
 
+int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, const PbfConstants& c, float limit,
+                               int max_iterations, std::span<Vec3> carried) {
+  if (fresh(p).empty()) return 0;
+  const std::size_t n = p.size();
+  for (auto* v : {&lambda_, &lambda_step_, &density_at_start_}) v->reserve(p.capacity());
+  for (auto* v : {&next_position_, &wall_grad_}) v->reserve(p.capacity());
+  lambda_.assign(n, 0.0f);
+  lambda_step_.assign(n, 0.0f);
+  density_at_start_.assign(p.density.begin(), p.density.end());
+  next_position_.resize(n);
+  wall_grad_.resize(n);
+  if (state == Grid::kBuild) grid.build(p);
+  PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
+  const PbfPassForms forms = dispatchedPbfPassForms();
+  const std::span<const std::uint32_t> candidates = watched(p, fresh_, grid);
+  a.position = p.position.data()->data();
+  a.only = candidates.data();
+  a.only_count = candidates.size();
+  forms.lambda(a, c, grid);
+  a.only = nullptr;
+  a.only_count = 0;
+  std::fill(lambda_.begin(), lambda_.end(), 0.0f);
+  return place(p, grid, candidates, a, c, forms, limit, max_iterations, carried);
+}
+
 int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates,
-                          PbfArrays& a, const PbfConstants& c, const PbfPassForms& forms,
-                          std::span<const float> density_at_start, std::vector<Vec3>& next_position, float limit,
-                          int max_iterations) {
+                          PbfArrays& a, const PbfConstants& c, const PbfPassForms& forms, float limit,
+                          int max_iterations, std::span<Vec3> carried) {
   const std::size_t n = p.size();
   const float rho0 = c.rest_density;
   const std::size_t room = p.capacity();
@@ -99,7 +123,7 @@ int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<co
   // The candidates compressed beyond the limit.
   placed_.clear();
   for (std::uint32_t i : candidates) {
-    if (placementExcess(p, density_at_start, rho0, i) > limit) placed_.push_back(i);
+    if (placementExcess(p, density_at_start_, rho0, i) > limit) placed_.push_back(i);
   }
   if (placed_.empty()) return 0;
   // Updated: the placements and their neighbours; moved: those and theirs. Every other particle
@@ -119,14 +143,17 @@ int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<co
     a.only = updated_.data();
     a.only_count = updated_.size();
     forms.lambda(a, c, grid);
-    a.position_next = next_position.data()->data();
+    a.position_next = next_position_.data()->data();
     a.only = moved_.data();
     a.only_count = moved_.size();
     forms.correct(a, c, grid, false);
-    for (std::uint32_t i : moved_) p.position[i] = next_position[i];
+    for (std::uint32_t i : moved_) {
+      if (!carried.empty()) carried[i] += next_position_[i] - p.position[i];
+      p.position[i] = next_position_[i];
+    }
     ++iteration;
     // Done once no placement is still over the limit (the lambda pass measured them all).
-    std::erase_if(placed_, [&](std::uint32_t i) { return placementExcess(p, density_at_start, rho0, i) <= limit; });
+    std::erase_if(placed_, [&](std::uint32_t i) { return placementExcess(p, density_at_start_, rho0, i) <= limit; });
   }
   a.only = nullptr;
   a.only_count = 0;

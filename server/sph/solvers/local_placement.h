@@ -1,13 +1,17 @@
 // Where the adaptive step puts a particle (a split's children, a merged particle) is a choice of
 // the method, not a motion of the water: the children of a split sit half a parent radius either
 // side of it, closer than the water would hold them, and nearer still by a wall. LocalPlacement
-// moves the fresh placements (dfsph: and their neighbours) compressed beyond a limit, and only as
-// far as it takes, by local Jacobi iterations of pbf's density constraint (pbf_passes.h): only
-// they and their neighbours update their multipliers, only the particles those reach move, and
-// velocities are not touched.
-// pbf runs it inside its first step after a placement (its constraint already moves positions);
-// dfsph before its first step, since its solver moves particles only through velocities and would
-// turn the overlap of a split into speed (docs/fluids.md).
+// moves the fresh placements and their neighbours compressed beyond a limit, and only as far as it
+// takes, by local Jacobi iterations of pbf's density constraint (pbf_passes.h): only they and
+// their neighbours update their multipliers, only the particles those reach move, and velocities
+// are not touched. Both solvers run it in the frame after a placement before they move the water:
+// dfsph before its first step, since it moves particles only through velocities and would turn
+// the overlap of a split into speed; pbf in its first step, after the prediction and before the
+// constraint, carrying the step's start positions along, since it takes velocities from the
+// step's displacements. Run after pbf's constraint (until 2026-12-05), the placement's moves
+// became velocity, which its speed rule for placed particles scaled down whole, the water's own
+// motion with it: the Martin & Moyce front on the surface method, whose water is split and merged
+// as its surface moves, fell 9 % behind the experiment (docs/fluids.md).
 #pragma once
 
 #include <cstdint>
@@ -39,23 +43,38 @@ PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<fl
 
 class LocalPlacement {
  public:
+  // Whether placeFresh builds the neighbour grid on the particles or finds it built there.
+  enum class Grid { kBuild, kCurrent };
+
+  // In the frame after the adaptive step, before the solver moves the water: the particles marked
+  // kPlacedThisFrame and their neighbours (a merged particle can press an unmerged neighbour it
+  // lands beside while itself within the limit), where they now sit, each compressed more than
+  // `limit` (kg/m^3) beyond max(its density at the frame's start, rho0) (a child carries its
+  // parent's), are moved with their neighbourhoods for at most `max_iterations` iterations or
+  // until none exceeds it. Their densities come from a constraint pass over them alone, whose
+  // multipliers are discarded. `c` holds the box and obstacles for the particles' time; `grid`
+  // is built on p first with Grid::kBuild, and only when anything is fresh. `carried` (empty, or
+  // one per particle): positions moved by the same displacement as their particle, so that a
+  // solver which takes velocities from displacements (pbf) sees none from the placement. Returns
+  // the iterations (0 when nothing is fresh).
+  int placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, const PbfConstants& c, float limit, int max_iterations,
+                 std::span<Vec3> carried = {});
+
+ private:
   // The particles marked kPlacedThisFrame, in order.
   std::span<const std::uint32_t> fresh(const ParticleSet& p);
   // fresh(p) and their neighbours in `grid` (built on p), sorted.
   std::span<const std::uint32_t> watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
                                          const NeighborGrid& grid);
-
-  // Moves the `candidates` (fresh() or watched(), whose densities the caller's last constraint
-  // pass measured) whose density exceeds max(density_at_start, rho0) by more than `limit`
-  // (kg/m^3), with their neighbourhoods, for at most `max_iterations` iterations or until none
-  // exceeds it. `a` views p at its current positions (position, density, lambda, lambda_step,
-  // wall_grad set and sized to p); lambda carries on from its values, lambda_step is zeroed first.
-  // `next_position` is scratch of p.size(). Returns the iterations.
+  // The iterations of placeFresh over the `candidates`, whose densities the last constraint pass
+  // measured; `a` views p at its current positions, lambda carries on from its values,
+  // lambda_step is zeroed first.
   int place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates, PbfArrays& a,
-            const PbfConstants& c, const PbfPassForms& forms, std::span<const float> density_at_start,
-            std::vector<Vec3>& next_position, float limit, int max_iterations);
+            const PbfConstants& c, const PbfPassForms& forms, float limit, int max_iterations, std::span<Vec3> carried);
 
- private:
+  // Scratch, sized to the particles.
+  std::vector<float> lambda_, lambda_step_, density_at_start_;
+  std::vector<Vec3> next_position_, wall_grad_;
   std::vector<std::uint32_t> fresh_, watched_, placed_, updated_, moved_;
   std::vector<std::uint8_t> mark_;
 };

@@ -52,14 +52,14 @@ void markNearPlacements(const NeighborGrid& grid, ParticleSet& p) {
 }
 
 // Particles the adaptive step has just placed (split children, merged particles) sit where the
-// split or merge put them, not where the water would. In the frame after, those compressed beyond
-// this share of rest density more than their parent was (or than rest density, if more) get
-// further iterations, local ones: only they and their neighbours update their multipliers, and
-// only the particles those reach move (the others' corrections are zero), up to
-// kPlacedIterations more per step. Splitting every particle of a resting pool then compresses it
-// 2.5 % more, 11 % without (SplitMerge.SplittingOrMergingARestingPbfPoolDoesNotKickIt); a handful
-// of splits costs a handful of neighbourhoods, and the compression the flow itself brings (an
-// impact) nothing.
+// split or merge put them, not where the water would. In the frame's first step, before the
+// constraint, those compressed beyond this share of rest density more than their parent was (or
+// than rest density, if more) are moved by position, with their neighbourhoods, for up to
+// kPlacedIterations local iterations (local_placement.h): only they and their neighbours update
+// their multipliers, and only the particles those reach move. Splitting every particle of a
+// resting pool then compresses it 2 % more, 11 % without
+// (SplitMerge.SplittingOrMergingARestingPbfPoolDoesNotKickIt); a handful of splits costs a handful
+// of neighbourhoods, and the compression the flow itself brings (an impact) nothing.
 constexpr float kPlacedCompression = 0.03f;
 constexpr int kPlacedIterations = 21;
 
@@ -80,15 +80,15 @@ void PbfSolver::advance(const FrameContext& frame) {
   frame.stats = SolverStats{};
   frame.stats.substeps = steps;
   ParticleSet& p = frame.particles;
-  density_at_start_.reserve(p.capacity());
-  density_at_start_.assign(p.density.begin(), p.density.end());
   // The frame's pressure is the mean of its steps': where the iterations a step takes vary (the
   // density tolerance), one step's multipliers push more or less than the weight above them, and
   // the last step's alone gave a deep column's pressure slope as 0.66 rho0 g (the mean: 0.99-1.05).
   // Each step adds its pressure to pressure_sum_ (nothing reads p.pressure between the steps).
   pressure_sum_.reserve(p.capacity());
   pressure_sum_.assign(p.size(), 0.0f);
-  for (int s = 0; s < steps; ++s) substep(frame, frame.time + s * dt, static_cast<float>(dt), s == steps - 1);
+  for (int s = 0; s < steps; ++s) {
+    substep(frame, frame.time + s * dt, static_cast<float>(dt), s == 0, s == steps - 1);
+  }
   for (std::size_t i = 0; i < p.size(); ++i) {
     p.pressure[i] = pressure_sum_[i] / static_cast<float>(steps);
     p.pressure_term[i] = p.pressure[i] / (p.density[i] * p.density[i]);
@@ -102,7 +102,7 @@ void PbfSolver::advance(const FrameContext& frame) {
   }
 }
 
-float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool last) {
+float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool first, bool last) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
   const std::size_t room = p.capacity();
@@ -137,6 +137,16 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
   markNearPlacements(frame.grid, p);
   frame.timings.neighbor_ms += msSince(t);
 
+  // The frame's fresh placements to their places (local_placement.h), by position: their start
+  // positions move with them, so the step's velocities do not see the placement.
+  if (first) {
+    t = std::chrono::steady_clock::now();
+    frame.stats.placement_iterations +=
+        placement_.placeFresh(p, frame.grid, LocalPlacement::Grid::kCurrent, constants_,
+                              kPlacedCompression * constants_.rest_density, kPlacedIterations, old_position_);
+    frame.timings.density_pressure_ms += msSince(t);
+  }
+
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
 
   // Solve the density constraints (lines 8-19) from lambda = 0 (MM13), the artificial pressure
@@ -170,9 +180,6 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool la
     ++iterations;
   }
   frame.stats.iterations += iterations;
-  frame.stats.placement_iterations +=
-      placement_.place(p, frame.grid, placement_.fresh(p), a, constants_, forms, density_at_start_, next_position_,
-                       kPlacedCompression * constants_.rest_density, kPlacedIterations);
   frame.timings.density_pressure_ms += msSince(t);
 
   // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22). A particle

@@ -28,8 +28,8 @@ class PbfSolver : public FluidSolver {
   void settle(const FrameContext& frame) override;
 
  private:
-  // Returns the largest distance a particle moved. `last`: the frame's last step.
-  float substep(const FrameContext& frame, double t0, float dt, bool last);
+  // Returns the largest distance a particle moved. `first`, `last`: the frame's first and last step.
+  float substep(const FrameContext& frame, double t0, float dt, bool first, bool last);
 
   IncompressibleSetup setup_;
   PbfConstants constants_;
@@ -37,7 +37,6 @@ class PbfSolver : public FluidSolver {
   // Scratch, sized to the particles once at the ceiling (no allocation in a step after that).
   std::vector<Vec3> old_position_, next_position_, next_velocity_, vorticity_, wall_grad_;
   std::vector<float> lambda_, lambda_step_;
-  std::vector<float> density_at_start_;  // the frame's, for the placed particles' extra iterations
   LocalPlacement placement_;
   std::vector<float> pressure_sum_;   // the frame's steps' pressures, summed
   std::vector<double> sum_partials_;  // orderedSum's scratch
