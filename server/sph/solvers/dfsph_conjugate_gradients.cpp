@@ -64,8 +64,7 @@ int DfsphSolver::conjugateGradients(const FrameContext& frame, const DfsphPassFo
   int since_anchor = 0;
   arrays_.stiffness = search_.data();
   while (iteration < frame.scene.params.max_iterations && rz > 0.0) {
-    forms.acceleration(arrays_, constants_, frame.grid);
-    floor_.hold(acceleration_);                     // the held particles' P a (floor_contact.h): B stays symmetric
+    pressureAccelerations(forms, frame.grid, true);
     forms.change(arrays_, constants_, frame.grid);  // B search = -scale change_
     // Each iteration's O(n) work in as few sweeps as the sums allow (ordered_sum.h).
     const auto [search_change, search_weighted] = orderedSums<2>(n, sum_partials_, [&](std::size_t i) {

@@ -101,6 +101,11 @@ void DfsphSolver::placeFresh(const FrameContext& frame) {
   frame.timings.density_pressure_ms += msSince(t);
 }
 
+void DfsphSolver::pressureAccelerations(const DfsphPassForms& forms, const NeighborGrid& grid, bool held) {
+  forms.acceleration(arrays_, constants_, grid);
+  if (held) floor_.hold(acceleration_);
+}
+
 int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
@@ -139,8 +144,7 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   int iteration = 0;
   bool accelerated = false;  // whether the iterations turned to conjugate gradients yet
   while (iteration < params.max_iterations) {
-    forms.acceleration(arrays_, constants_, frame.grid);
-    if (density_target) floor_.hold(acceleration_);
+    pressureAccelerations(forms, frame.grid, density_target);
     forms.change(arrays_, constants_, frame.grid);
     if (density_target && params.conjugate_gradients && !accelerated && iteration == kJacobiIterations) {
       // Jacobi removes a step's new, local error in a few iterations, but the smooth rest only at
@@ -164,8 +168,7 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
     // divergence solve took 1.5x the iterations, dam break).
     if (error / count <= tolerance && iteration >= least) break;
   }
-  forms.acceleration(arrays_, constants_, frame.grid);
-  if (density_target) floor_.hold(acceleration_);
+  pressureAccelerations(forms, frame.grid, density_target);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     p.velocity[i] += dt * acceleration_[i];

@@ -39,6 +39,10 @@ class DfsphSolver : public FluidSolver {
   // (density_target) or its rate 0, from `warm` (the last step's k, which receives this step's),
   // then the velocities it gives. Returns the iterations taken.
   int solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt);
+  // acceleration_ from arrays_.stiffness (the acceleration pass), and in the constant-density
+  // solve (held) less the components the floor holds (floor_contact.h): every pass of that solve,
+  // so that its system stays the symmetric one of the held particles.
+  void pressureAccelerations(const DfsphPassForms& forms, const NeighborGrid& grid, bool held);
   // solve's iterations for the constant density past the first Jacobi ones, from the k and the
   // change_ they left (dfsph_conjugate_gradients.cpp); returns the iteration count reached.
   int conjugateGradients(const FrameContext& frame, const DfsphPassForms& forms, float scale, float tolerance,

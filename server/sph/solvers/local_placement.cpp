@@ -94,7 +94,7 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
   for (auto* v : {&lambda_, &lambda_step_, &density_at_start_}) v->reserve(p.capacity());
   for (auto* v : {&next_position_, &wall_grad_}) v->reserve(p.capacity());
   lambda_.assign(n, 0.0f);
-  lambda_step_.assign(n, 0.0f);
+  lambda_step_.resize(n);  // place() zeroes it before its first correction reads it
   density_at_start_.assign(p.density.begin(), p.density.end());
   next_position_.resize(n);
   wall_grad_.resize(n);
