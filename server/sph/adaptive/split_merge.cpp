@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "sph/adaptive/decide.h"
+#include "sph/adaptive/split_axis.h"
 #include "sph/collision.h"
 #include "sph/hashed_direction.h"
 #include "sph/thread_share.h"
@@ -14,38 +15,6 @@
 namespace sph {
 
 namespace {
-
-// Largest t such that centre +- t * dir both lie inside the box shrunk by `margin` (the child
-// radius), capped at `wanted`. The parent already sits inside the box shrunk by its own, larger
-// radius, so t > 0 always.
-float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin, float wanted) {
-  float t = wanted;
-  for (int a = 0; a < 3; ++a) {
-    const float d = std::abs(dir[a]);
-    if (d < 1e-6f) continue;
-    const float room = std::min(centre[a] - (box.min[a] + margin), (box.max[a] - margin) - centre[a]);
-    t = std::min(t, std::max(room, 0.0f) / d);
-  }
-  return t;
-}
-
-// The split direction turned along the walls that would cut it short: the components towards a
-// wall closer than `wanted` (less the margin) dropped. A parent in the wall layer sits about a
-// LARGE half-spacing from the wall, which is all but the SMALL radius the children keep off it,
-// so along the hashed direction its children landed on one point; nothing separates two particles
-// on one point (the kernel's gradient vanishes there), and the doubled mass kicked the water
-// around it (a dfsph tank split by the surface method: 0.74 m/s rms, 0.43 with the children
-// turned). Unchanged where no wall is that close, and where every axis is (a box hardly larger
-// than a particle).
-Vec3 alongWalls(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin, float wanted) {
-  Vec3 along = dir;
-  for (int a = 0; a < 3; ++a) {
-    const float room = std::min(centre[a] - (box.min[a] + margin), (box.max[a] - margin) - centre[a]);
-    if (room < wanted * std::abs(dir[a])) along[a] = 0.0f;
-  }
-  const float length = along.norm();
-  return length > 1e-3f ? Vec3(along / length) : dir;
-}
 
 // Obstacles may sit where a child lands: push the child out as the step's collision would, without
 // touching its velocity (split keeps velocities, eq. 3.39).
@@ -152,28 +121,41 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     splitting[splits] = static_cast<std::uint32_t>(i);
     splits += wantsSplit(decision[i], p.size_class[i]);
   }
+  // Where the children go (split_axis.h): on incompressible water along the roomiest axis among
+  // the parent's neighbours, on the thesis's along a direction drawn from the parent's id. The
+  // step's neighbour lists serve (the adaptive step follows the solver's); lists of another
+  // particle count (a second split or merge without a step between) are built again.
+  const bool roomiest = sim.params().solver != Solver::kThesis;
+  if (roomiest && splits > 0 && sim.grid().neighborCounts().size() != n) sim.rebuildNeighbors();
   const std::size_t first_child = p.appendReset(splits);
   counts.splits = static_cast<int>(splits);
   const float small_radius = static_cast<float>(small.radius);
   const float large_radius = static_cast<float>(large.radius);
 
   // Split, eqs. (3.37)-(3.39), every attribute by its rule (particle_attributes.h); the children
-  // sit at +- half the parent radius along the split direction, so the centre of mass stays put.
+  // sit at +- half the parent radius along the split axis, so the centre of mass stays put.
   // They are then 0.78 SMALL lattice spacings apart (r = 0.62 spacings, eq. 3.7; a LARGE spacing
   // is 1.26 SMALL ones), closer than a lattice's neighbours: the incompressible solvers then move
-  // the fresh particles apart by position (local_placement.h).
+  // the fresh particles apart by position (local_placement.h). The roomiest axis reads the
+  // neighbours' positions, so every offset is chosen before any parent moves: the first pass
+  // keeps it in the child's slot (appended, so no neighbour list names it), the second places.
   if (splits > 0) {
     // Only the splitting particles, in small chunks: they cluster in index ranges.
 #pragma omp parallel for schedule(dynamic, 32)
     for (std::uint32_t slot = 0; slot < splits; ++slot) {
       const std::size_t i = splitting[slot];
-      const std::size_t c = first_child + slot;
-      const Vec3 centre = p.position[i];
       const float wanted = 0.5f * p.radius[i];
-      const Vec3 dir = alongWalls(centre, splitDirection(p.id[i]), box, small_radius, wanted);
-      const float reach = symmetricReach(centre, dir, box, small_radius, wanted);
-      Vec3 a = centre + reach * dir;
-      Vec3 b = centre - reach * dir;
+      p.position[first_child + slot] =
+          roomiest ? roomiestChildOffset(p, sim.grid(), i, box, small_radius, wanted)
+                   : childOffsetInBox(p.position[i], splitDirection(p.id[i]), box, small_radius, wanted);
+    }
+#pragma omp parallel for schedule(dynamic, 32)
+    for (std::uint32_t slot = 0; slot < splits; ++slot) {
+      const std::size_t i = splitting[slot];
+      const std::size_t c = first_child + slot;
+      const Vec3 offset = p.position[c];
+      Vec3 a = p.position[i] + offset;
+      Vec3 b = p.position[i] - offset;
       keepOutOfObstacles(boundary, box, small_radius, a);
       keepOutOfObstacles(boundary, box, small_radius, b);
       p.splitInto(i, c, small);

@@ -34,14 +34,16 @@ struct SplitMergeCounts {
 };
 
 // Splits every LARGE particle flagged SPLIT into two SMALL children placed symmetrically about its
-// centre, along a direction drawn from its id (deterministic, never the same point), and merges
+// centre (split_axis.h: on incompressible water along the axis with the most room among its
+// neighbours, on the thesis's along a direction drawn from its id; deterministic), and merges
 // every mutual pair into a LARGE particle at the pair's midpoint with the mean velocity. Children
 // and merged particles stay inside the box with their radius. `keep` and `split_list` are scratch.
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
                                  std::span<const std::int32_t> partner, std::vector<std::uint8_t>& keep,
                                  std::vector<std::uint32_t>& split_list);
 
-// Unit vector drawn from a particle id (splitmix64), the axis a split places its children along.
+// Unit vector drawn from a particle id (splitmix64), the axis a split on the thesis's water places
+// its children along.
 Vec3 splitDirection(std::uint32_t id);
 
 }  // namespace sph

@@ -1,0 +1,29 @@
+// Where a split puts its two children: their offset from the parent's centre (one child at
+// centre + offset, the other at centre - offset), kept inside the box.
+#pragma once
+
+#include <cstddef>
+
+#include "sph/boundary.h"
+#include "sph/neighbor_grid.h"
+#include "sph/particles.h"
+
+namespace sph {
+
+// `wanted` along `dir`, turned along the walls that would cut it short (the components towards a
+// wall closer than `wanted`, less `margin`, dropped) and shortened so that both children stay
+// `margin` (their radius) inside the box. The thesis's water splits along a direction drawn from
+// the parent's id (splitDirection).
+Vec3 childOffsetInBox(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin, float wanted);
+
+// Incompressible water (pbf, dfsph): the offset (childOffsetInBox) along the candidate axis whose
+// children keep the farthest from particle i's neighbours and from each other, the nearest of
+// them deciding. The candidates are the cubes' diagonals, the face diagonals and the axes; where
+// the neighbours lie to one side (the free surface) they are first turned into the plane across
+// that side. A drawn direction puts a child within 0.5 SMALL spacings of a neighbour in one split
+// of ten (a resting pool split whole), and at the surface half the children out of the water;
+// the children's compression and kick follow (docs/fluids.md, "Where the children go").
+Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::size_t i, const BoxState& box,
+                         float margin, float wanted);
+
+}  // namespace sph
