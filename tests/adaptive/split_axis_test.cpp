@@ -55,9 +55,7 @@ struct LatticeBlock {
 
   std::size_t at(int x, int y, int z) const { return static_cast<std::size_t>((z * n + y) * n + x); }
 
-  sph::Vec3 offsetOf(std::size_t i) const {
-    return sph::roomiestChildOffset(particles, grid, i, box, margin, wanted);
-  }
+  sph::Vec3 offsetOf(std::size_t i) const { return sph::roomiestChildOffset(particles, grid, i, box, margin, wanted); }
 
   // The nearest any particle of the block but i comes to either child of i.
   float roomAround(std::size_t i, const sph::Vec3& offset) const {

@@ -47,10 +47,9 @@ constexpr std::size_t kLanes = 16;
 std::array<Vec3, kCandidates> candidateAxes() {
   const float d = 1.0f / std::sqrt(3.0f);
   const float f = 1.0f / std::sqrt(2.0f);
-  return {Vec3(d, d, d),          Vec3(d, d, -d),         Vec3(d, -d, d),        Vec3(-d, d, d),
-          Vec3(f, f, 0.0f),       Vec3(f, -f, 0.0f),      Vec3(f, 0.0f, f),      Vec3(f, 0.0f, -f),
-          Vec3(0.0f, f, f),       Vec3(0.0f, f, -f),      Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f),
-          Vec3(0.0f, 0.0f, 1.0f)};
+  return {Vec3(d, d, d),          Vec3(d, d, -d),         Vec3(d, -d, d),        Vec3(-d, d, d),   Vec3(f, f, 0.0f),
+          Vec3(f, -f, 0.0f),      Vec3(f, 0.0f, f),       Vec3(f, 0.0f, -f),     Vec3(0.0f, f, f), Vec3(0.0f, f, -f),
+          Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f)};
 }
 
 // A later candidate must give more room than this share of `wanted` to win: water near a lattice
