@@ -40,7 +40,7 @@ Vec3 alongWalls(const Vec3& centre, const Vec3& dir, const BoxState& box, float 
 }
 
 // The candidates, in the order ties go: the cubes' four diagonals (a lattice split along one of
-// them sets each child furthest from the others' neighbours), six face diagonals, three axes.
+// them keeps each child farthest from the parent's neighbours), six face diagonals, three axes.
 constexpr std::size_t kCandidates = 13;
 constexpr std::size_t kLanes = 16;
 
