@@ -87,7 +87,6 @@ Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::si
   const Vec3 normal = sideOfNeighbours(p, neighbors, centre, 2.0f * wanted);
   // The candidates' offsets side by side, one lane each (the lanes past `count` stay at zero room
   // and are never read): each neighbour is read once for all of them, and the lanes vectorise.
-  std::array<Vec3, kLanes> offset{};
   std::array<float, kLanes> ox{}, oy{}, oz{}, room2{};
   std::size_t count = 0;
   for (const Vec3& candidate : candidates) {
@@ -96,11 +95,11 @@ Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::si
     Vec3 axis = candidate - candidate.dot(normal) * normal;
     if (axis.norm() < 0.5f) continue;  // mostly along the normal: another candidate covers the plane
     axis.normalize();
-    offset[count] = childOffsetInBox(centre, axis, box, margin, wanted);
-    ox[count] = offset[count].x();
-    oy[count] = offset[count].y();
-    oz[count] = offset[count].z();
-    room2[count] = 4.0f * offset[count].squaredNorm();  // the children's own distance
+    const Vec3 offset = childOffsetInBox(centre, axis, box, margin, wanted);
+    ox[count] = offset.x();
+    oy[count] = offset.y();
+    oz[count] = offset.z();
+    room2[count] = 4.0f * offset.squaredNorm();  // the children's own distance
     ++count;
   }
   for (std::uint32_t j : neighbors) {
@@ -120,7 +119,7 @@ Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::si
     const float room = std::sqrt(room2[k]);
     if (room > best_room + kLead * wanted) {
       best_room = room;
-      best = offset[k];
+      best = Vec3(ox[k], oy[k], oz[k]);
     }
   }
   return best;

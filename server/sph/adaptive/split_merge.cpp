@@ -1,8 +1,6 @@
 #include "sph/adaptive/split_merge.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 #include <omp.h>
 

@@ -89,7 +89,8 @@ std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, std
 
 int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, const PbfConstants& c, float limit,
                                int max_iterations, std::span<Vec3> carried) {
-  if (fresh(p).empty()) return 0;
+  const std::span<const std::uint32_t> placements = fresh(p);
+  if (placements.empty()) return 0;
   const std::size_t n = p.size();
   for (auto* v : {&lambda_, &lambda_step_, &density_at_start_}) v->reserve(p.capacity());
   for (auto* v : {&next_position_, &wall_grad_}) v->reserve(p.capacity());
@@ -101,7 +102,7 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
   if (state == Grid::kBuild) grid.build(p);
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
   const PbfPassForms forms = dispatchedPbfPassForms();
-  const std::span<const std::uint32_t> candidates = watched(p, fresh_, grid);
+  const std::span<const std::uint32_t> candidates = watched(p, placements, grid);
   a.position = p.position.data()->data();
   a.only = candidates.data();
   a.only_count = candidates.size();
