@@ -41,6 +41,8 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   particle_cell_.reserve(particle_capacity);
   for (auto* v : {&sorted_x_, &sorted_y_, &sorted_z_, &sorted_support_}) v->reserve(particle_capacity);
   neighbor_count_.reserve(particle_capacity);
+  other_support_.reserve(particle_capacity);
+  support_run_end_.reserve(particle_capacity);
   neighbor_start_.reserve(particle_capacity);
   neighbor_index_.resize(particle_capacity * stride_ + 16);
 }
@@ -55,6 +57,7 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   particle_cell_.resize(n);
   cell_particles_.resize(n);
   neighbor_count_.resize(n);
+  other_support_.resize(n);
   neighbor_start_.resize(n);
   for (auto* v : {&sorted_x_, &sorted_y_, &sorted_z_, &sorted_support_}) v->resize(n);
   // configure() sized the counts for the thread count of its time; a larger team needs more.
@@ -107,8 +110,20 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   cell_start_[cells] = static_cast<std::uint32_t>(n);
 }
 
+void NeighborGrid::findSupportRuns() {
+  const std::size_t n = sorted_support_.size();
+  support_run_end_.resize(n);
+  // From the back: each candidate's run ends where its successor's does, unless the successor's
+  // support differs. Serial: one pass over the particles, small beside the scan.
+  for (std::size_t k = n; k-- > 0;) {
+    const bool same_as_next = k + 1 < n && sorted_support_[k + 1] == sorted_support_[k];
+    support_run_end_[k] = same_as_next ? support_run_end_[k + 1] : static_cast<std::uint32_t>(k + 1);
+  }
+}
+
 void NeighborGrid::build(const ParticleSet& particles) {
   bin(particles);
+  findSupportRuns();
   const std::size_t n = particles.size();
   const auto build_block = simdLevel() == SimdLevel::kAvx512 ? avx512::buildBlockLists : scalar::buildBlockLists;
   const SortedCandidates sorted{sorted_x_.data(), sorted_y_.data(), sorted_z_.data(), sorted_support_.data(),
@@ -130,8 +145,10 @@ void NeighborGrid::build(const ParticleSet& particles) {
                          sorted,
                          particles.position.data(),
                          particles.support.data(),
+                         support_run_end_.data(),
                          neighbor_index_.data(),
                          neighbor_count_.data(),
+                         other_support_.data(),
                          neighbor_start_.data(),
                          stride_};
     const std::size_t blocks = blockCount(n);

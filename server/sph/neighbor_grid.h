@@ -38,6 +38,11 @@ class NeighborGrid {
   }
   std::uint32_t neighborCount(std::size_t i) const { return neighbor_count_[i]; }
 
+  // Whether some neighbour of particle i may have another support radius than i (the other size
+  // class: a mixed pair, eq. (3.35)); false where none of its candidates has (it is among its
+  // own class only), and there a pair pass needs no neighbour's support.
+  bool hasOtherSupport(std::size_t i) const { return other_support_[i] != 0; }
+
   // Where particle i's list starts among the grid's slotCount() slots: a value per pair computed
   // once a build (dfsph's kernel gradients) can be kept in an array of its own at the same slots.
   std::size_t neighborSlot(std::size_t i) const { return neighbor_start_[i]; }
@@ -60,6 +65,9 @@ class NeighborGrid {
   double meanNeighbors() const;
 
  private:
+  // support_run_end_ for the cell order bin() left.
+  void findSupportRuns();
+
   // Cells are one (largest) support radius wide, so a particle's candidates lie in 9 rows of 3
   // cells. Half-radius cells (25 rows of 5) test fewer candidates, but each row costs its setup
   // and a partly empty 16-lane batch, and they were slower (docs/performance.md).
@@ -85,9 +93,11 @@ class NeighborGrid {
   // Position and support radius of cell_particles_[k] at k, one array per coordinate: the candidate
   // loop reads memory in order, 16 candidates per AVX-512 instruction where the CPU has it.
   std::vector<float> sorted_x_, sorted_y_, sorted_z_, sorted_support_;
+  std::vector<std::uint32_t> support_run_end_;  // BlockLists::support_run_end
   // Per thread: the lists of a group after its first, (kMaxScanGroup - 1) x (stride + 16) slots.
   std::vector<std::vector<std::uint32_t>> group_scratch_;
   std::vector<std::uint32_t> neighbor_count_;
+  std::vector<std::uint8_t> other_support_;  // hasOtherSupport, per particle
   std::vector<std::size_t> neighbor_start_;  // where each list begins in neighbor_index_
   // Room for particles x stride_. A block's particles [b, e) own slots [b, e) x stride_ and pack
   // their lists from the start of that range: the pair loops then stream the lists instead of

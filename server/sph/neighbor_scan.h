@@ -64,13 +64,18 @@ struct BlockLists {
   SortedCandidates sorted;
   const Vec3* position;
   const float* support;
+  // In cell order: where the run of candidates with candidate k's support radius ends (one past
+  // its last), so that a row of candidates shows at once whether it holds one support or two.
+  const std::uint32_t* support_run_end;
   std::uint32_t* neighbor_index;  // particles x stride slots
   std::uint32_t* neighbor_count;
+  std::uint8_t* other_support;  // per particle: 1 where its candidates have another support than its own
   std::size_t* neighbor_start;
   std::size_t stride;  // slots per particle; a list keeps at most stride - 1 entries
 };
 
-// Writes the lists of particles [begin, end), a block whose particles own slots
+// Writes the lists of particles [begin, end), and whether each one's candidates hold another
+// support than its own (NeighborGrid::hasOtherSupport), a block whose particles own slots
 // [begin, end) x stride and pack their lists from its start; `scratch` holds the lists of a group
 // after its first, (kMaxScanGroup - 1) x (stride + 16) slots. Returns the longest true count (one
 // at or past stride - 1 means some list was cut: the caller grows the stride and redoes the pass).

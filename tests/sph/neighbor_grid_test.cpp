@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
@@ -229,6 +230,48 @@ TEST(NeighborGrid, NeighbourRelationIsSymmetric) {
       const bool listed = std::find(list.begin(), list.end(), static_cast<std::uint32_t>(j)) != list.end();
       EXPECT_EQ(close, listed) << "pair " << i << ", " << j;
     }
+  }
+}
+
+// A pair pass reads a neighbour's support only where the grid says the particle may have one of
+// the other class (hasOtherSupport): never wrong where a listed neighbour has another support, and
+// false for particles whose candidates are all of their own class, for any thread count.
+TEST(NeighborGrid, ParticlesAmongTheirOwnClassHaveNoOtherSupport) {
+  const auto classes = sph::thesisPreset().classes();
+  ASSERT_NE(classes[0].support, classes[1].support);
+  // A bar 0.6 m long: SMALL particles in its first third, LARGE ones beyond.
+  sph::ParticleSet p(3000);
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<float> along(0.0f, 0.6f), across(0.0f, 0.1f);
+  while (p.size() < p.capacity()) {
+    const sph::Vec3 x(along(rng), across(rng), across(rng));
+    const sph::SizeClass c = x.x() < 0.2f ? sph::SizeClass::Small : sph::SizeClass::Large;
+    p.add(x, sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+  }
+  sph::Aabb bounds;
+  bounds.max = Eigen::Vector3d(0.6, 0.1, 0.1);
+  const float cell = static_cast<float>(std::max(classes[0].support, classes[1].support));
+  for (int threads : {1, 2}) {
+    sph::NeighborGrid grid;
+    grid.configure(bounds, cell, p.size());
+    withThreads(threads, [&] { grid.build(p); });
+    std::size_t mixed = 0, far_from_the_other = 0, far_flagged = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      bool has_other = false;
+      for (std::uint32_t j : grid.neighbors(i)) has_other = has_other || p.support[j] != p.support[i];
+      if (has_other) {
+        ++mixed;
+        EXPECT_TRUE(grid.hasOtherSupport(i)) << "particle " << i << " has a neighbour of the other class";
+      }
+      // Two cells and more from the classes' border no candidate is of the other class.
+      if (std::abs(p.position[i].x() - 0.2f) > 2.0f * cell) {
+        ++far_from_the_other;
+        if (grid.hasOtherSupport(i)) ++far_flagged;
+      }
+    }
+    EXPECT_GT(mixed, 0u) << "the border should hold mixed pairs";
+    EXPECT_GT(far_from_the_other, p.size() / 2);
+    EXPECT_EQ(far_flagged, 0u) << threads << " threads";
   }
 }
 
