@@ -2,7 +2,8 @@
 // (NeighborGrid::neighborSlot) by one pass for the passes that follow it at the same positions:
 // dfsph's solves read the kernel gradients its density pass stored instead of evaluating the
 // kernel again in each of their iterations. Where one pass reads what one wrote (pbf's lambda
-// and correction) storing cost more than it saved (docs/performance.md). x at [0, S), y at
+// and correction) storing the three components cost more than it saved; pbf keeps the gradient
+// factor alone, a float a pair (PbfArrays::pair_g; docs/performance.md). x at [0, S), y at
 // [S, 2 S), z at [2 S, 3 S), S = slots; valid until the grid is rebuilt or the positions move.
 #pragma once
 

@@ -51,6 +51,12 @@ struct PbfArrays {
   // grad Phi_i at `position`, written by the lambda pass for the correction pass that follows it
   // at the same positions, so that the walls' volume is sampled once per iteration (packed)
   float* wall_grad = nullptr;
+  // When set (NeighborGrid::slotCount() floats), the lambda pass keeps each pair's kernel gradient
+  // factor g (grad W_ij = g r_ij) at the pair's slot (NeighborGrid::neighborSlot) and the
+  // correction pass that follows it at the same positions reads it instead of evaluating the
+  // kernel again; only where both visit every particle and the correction has no artificial
+  // pressure (which needs W_ij as well). Null: the correction evaluates the kernel.
+  float* pair_g = nullptr;
   // When set, a pass visits only these particles (in this order) and leaves the others' entries
   // as they are: the local iterations around freshly placed particles (pbf_solver.cpp).
   const std::uint32_t* only = nullptr;

@@ -148,6 +148,11 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fi
   }
 
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
+  // Each lambda pass keeps the pairs' kernel gradient factor for the correction that follows it
+  // at the same positions (a float a pair; keeping the three components of grad W cost more than
+  // evaluating them again: docs/performance.md).
+  pair_g_.resize(frame.grid.slotCount());
+  a.pair_g = pair_g_.data();
 
   // Solve the density constraints (lines 8-19) from lambda = 0 (MM13), the artificial pressure
   // with the first correction. No warm start from the last step's multipliers: the constraint's

@@ -37,6 +37,7 @@ class PbfSolver : public FluidSolver {
   // Scratch, sized to the particles once at the ceiling (no allocation in a step after that).
   std::vector<Vec3> old_position_, next_position_, next_velocity_, vorticity_, wall_grad_;
   std::vector<float> lambda_, lambda_step_;
+  std::vector<float> pair_g_;  // PbfArrays::pair_g, at the grid's slots
   LocalPlacement placement_;
   std::vector<float> pressure_sum_;   // the frame's steps' pressures, summed
   std::vector<double> sum_partials_;  // orderedSum's scratch
