@@ -1,4 +1,4 @@
-// From raw tracker samples to what the bridge sends (issue 5, "Processing and output"):
+// From raw tracker samples to what the bridge sends:
 //  1. drop samples the tracker marks invalid, below the confidence threshold, not finite, or off screen;
 //  2. bridge short gaps: while no sample is accepted for up to max_gap_s nothing is sent (the server
 //     keeps the last gaze) and the filter keeps its state;

@@ -1,4 +1,4 @@
-// gaze_bridge: reads a gaze source, filters, and streams GazeSample messages to sph_server (issue 5).
+// gaze_bridge: reads a gaze source, filters, and streams GazeSample messages to sph_server.
 // See README.md in this folder for every option.
 #include <spdlog/spdlog.h>
 

@@ -1,11 +1,11 @@
 // When the simulation thread publishes a frame: on a steady clock at publish_hz, and at once when a
 // step has used a gaze sample that no frame has shown yet, so the frame that answers a glance does
-// not wait for the next tick of a 60 Hz clock (issue 17: gaze to refined frame). Early frames are
-// capped: never more than two frames in any 1 / publish_hz, so a 200 Hz tracker cannot push the frame
-// rate past twice publish_hz; an early frame also restarts the clock, so with sparse gaze the rate
-// stays near publish_hz. Every due time derives from the last frames and the current rate, so a new
-// rate applies from the next frame on (an old far-off deadline is never kept). Times are arguments,
-// so the rules are tested without a clock.
+// not wait for the next tick of a 60 Hz clock (the latency that counts runs from gaze to refined
+// frame). Early frames are capped: never more than two frames in any 1 / publish_hz, so a 200 Hz
+// tracker cannot push the frame rate past twice publish_hz; an early frame also restarts the clock,
+// so with sparse gaze the rate stays near publish_hz. Every due time derives from the last frames
+// and the current rate, so a new rate applies from the next frame on (an old far-off deadline is
+// never kept). Times are arguments, so the rules are tested without a clock.
 #pragma once
 
 #include <chrono>

@@ -39,7 +39,7 @@ struct FrontRun {
 };
 
 constexpr double kGravity = 9.81;
-constexpr double kTMax = 3.0;      // the comparison range
+constexpr double kTMax = 3.0;      // compared with the experiment for 0 < T <= 3
 constexpr double kMaxShift = 0.2;  // the largest start-up shift in T allowed
 
 FrontRun runSurgeFront(const sph::Scene& scene, const std::string& method, const gaze::GazeRecording* gaze,

@@ -1,5 +1,5 @@
-// Synthetic gaze: a seeded fixation/saccade model (issue 3: recordings shipped with the scenes; issue
-// 5: the bridge's default source when no tracker is named).
+// Synthetic gaze: a seeded fixation/saccade model (it writes the recordings shipped with the scenes, and
+// is the bridge's default source when no tracker is named).
 //
 // The gaze holds a target for a fixation (duration uniform in [fixation_min_s, fixation_max_s], each
 // sample the target plus normal jitter), then makes a saccade of saccade_s to the next target (samples

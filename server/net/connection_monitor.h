@@ -1,4 +1,4 @@
-// What libzmq does not do for a bound socket (issue 17): say how many peers are connected, cap them,
+// What libzmq does not do for a bound socket: say how many peers are connected, cap them,
 // report a failed accept (the descriptor limit reached: EMFILE, which otherwise leaves new peers
 // unserved with nothing logged), or drop one peer. A socket monitor gives each TCP connection's
 // descriptor as it is accepted and as it goes (ZMQ_EVENT_ACCEPTED / DISCONNECTED), and shutdown(2)

@@ -21,7 +21,7 @@
 
 namespace curve {
 
-// What a client key may do (issue 17): a viewer takes frames, sends camera poses and asks for status;
+// What a client key may do: a viewer takes frames, sends camera poses and asks for status;
 // an operator may also send gaze and every control verb. A server's or relay's own key has no role
 // that clients could use.
 enum class PeerRole { Viewer, Operator };

@@ -1,4 +1,4 @@
-// CURVE on a socket, both ends (issue 17, docs/security.md). A server socket (sph_server, sph_relay
+// CURVE on a socket, both ends (docs/security.md). A server socket (sph_server, sph_relay
 // downstream) presents its own key pair and has libzmq ask the ZAP handler (zap_handler.h) about
 // every client key; the handler's answer carries the key's role, which every message from that
 // connection then holds as its "Role" property. A client socket (sph_viewer, gaze_bridge, the

@@ -1,4 +1,4 @@
-// File descriptors (issue 17): every TCP peer holds one, and a process out of them can accept no
+// File descriptors: every TCP peer holds one, and a process out of them can accept no
 // one, with nothing said by libzmq. So a program raises its soft RLIMIT_NOFILE to the hard limit at
 // start, and caps the peers of each bound socket so that all of them together leave room for what
 // the process itself needs (libzmq's own descriptors, files, logs).

@@ -1,4 +1,4 @@
-// What the frames XPUB makes of the subscription messages its peers send (issue 17). Frames are
+// What the frames XPUB makes of the subscription messages its peers send. Frames are
 // single-part messages with no topic, so the one useful subscription is "" (everything); any other
 // is refused: counted, logged at a bounded rate, and not taken for a subscriber.
 //

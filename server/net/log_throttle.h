@@ -1,5 +1,5 @@
 // At most one log line per interval for a stream of like events, and how many events that line
-// stands for: a flood costs a counter increment per event, never a line each (issue 17: refused
+// stands for: a flood costs a counter increment per event, never a line each (refused
 // control requests, rejected input, refused keys and connections all log through one of these).
 #pragma once
 

@@ -46,7 +46,7 @@ struct NetConfig {
   InputSocketType gaze_type = InputSocketType::Sub;
   InputSocketType pose_type = InputSocketType::Sub;
   int frame_hwm = kFrameSendHwm;
-  // CURVE on every socket (issue 17): the server's certificate, secret key included. The ZAP handler
+  // CURVE on every socket: the server's certificate, secret key included. The ZAP handler
   // that judges client keys belongs to the context's owner (app::Server). None: plaintext, and every
   // peer may do everything, as on a server that only loopback reaches.
   std::optional<curve::Certificate> curve;

@@ -1,7 +1,7 @@
 // Text a peer sent (a scene name, a parameter name), made safe to repeat in a log line or a reply's
 // error: at most `max_bytes` of it, control characters shown as '?', invalid UTF-8 as '?', and a cut
 // made on a character boundary with the full length said. Without this a 60 kB scene name went into
-// every refusal's log line and reply (issue 17), and a newline in one could forge a log line.
+// every refusal's log line and reply, and a newline in one could forge a log line.
 #pragma once
 
 #include <cstddef>

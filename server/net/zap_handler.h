@@ -1,6 +1,6 @@
 // The ZAP handler (ZeroMQ Authentication Protocol, RFC 27) of one ZeroMQ context: libzmq asks it,
 // over inproc://zeromq.zap.01, about every CURVE client key during the handshake, and a connection
-// whose key it refuses never carries a message (issue 17, docs/security.md).
+// whose key it refuses never carries a message (docs/security.md).
 //
 // It answers 200 for a key in the allow-list, with the key's name as User-Id and its role as the
 // "Role" property (curve_sockets.h), which every message of that connection then carries; 400 for

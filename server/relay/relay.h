@@ -1,4 +1,4 @@
-// sph_relay: frames from one sph_server (or another relay) to viewers beyond one machine (issue 17).
+// sph_relay: frames from one sph_server (or another relay) to viewers beyond one machine.
 // ZeroMQ's own proxy does the forwarding (zmq_proxy_steerable): an XSUB connects upstream and a PUB
 // binds downstream, so a viewer connects to a relay exactly as to the server. The downstream side
 // takes the server's protections: CURVE and the ZAP handler (any allowed key, a viewer's is enough),

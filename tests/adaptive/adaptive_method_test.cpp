@@ -204,8 +204,8 @@ double churnUnderJitter(double ring_radius) {
 TEST(AdaptiveMethods, HysteresisRingStopsSplitMergeOscillation) {
   const double without_ring = churnUnderJitter(0.08);
   const double with_ring = churnUnderJitter(0.11);
-  // Measured: about 190 class changes per step without the ring, 2 with it (of some 2,500
-  // particles; what remains is the settling fluid crossing the ring's edges).
+  // Without the ring the jitter changes the class of many particles every step; with it only a
+  // few remain (the settling fluid crossing the ring's edges).
   EXPECT_GT(without_ring, 50.0) << "the jitter should churn particles without a ring";
   EXPECT_LT(with_ring, 0.05 * without_ring) << "with " << with_ring << " without " << without_ring;
   EXPECT_LT(with_ring, 10.0);

@@ -1,7 +1,7 @@
 // Scenario tier: 900 frames of every shipped scene with every method keep every particle in the
 // box, produce no NaN and keep the mass exactly (by class, every frame): with each scene's own
 // preset (the thesis's), and for 300 frames (3 s: the collapse, the splash and the first slosh)
-// with the server's default, pbf, whose step costs several times the thesis's.
+// with the server's default, pbf, whose step costs far more than the thesis's.
 #include <gtest/gtest.h>
 
 #include "bench/bench_run.h"

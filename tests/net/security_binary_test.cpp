@@ -1,6 +1,6 @@
-// The built programs' side of issue 17: sph_keygen's files (read by this code and by pyzmq), the
-// server's refusal to bind beyond loopback without CURVE or --insecure, CURVE from key files, and a
-// descriptor limit the server raises, caps its peers by and reports.
+// The built programs' side of the security rules (docs/security.md): sph_keygen's files (read by
+// this code and by pyzmq), the server's refusal to bind beyond loopback without CURVE or --insecure,
+// CURVE from key files, and a descriptor limit the server raises, caps its peers by and reports.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -101,7 +101,7 @@ TEST(ServerBinary, ServesCurveClientsFromKeyFiles) {
   EXPECT_NE(wrong_file.output.find("secret-key"), std::string::npos) << wrong_file.output;
 }
 
-// Issue 17: 1,097 idle connections under a 1,024 limit left new peers unserved, with nothing logged.
+// Without a cap, idle connections that used up the descriptor limit left new peers unserved, with nothing logged.
 // Under a low limit the server raises its soft limit to the hard one, divides what is left among
 // its sockets, drops idle connections beyond that (saying so), and keeps serving.
 TEST(ServerBinary, ALowDescriptorLimitCapsPeersAndTheServerKeepsServing) {

@@ -1,4 +1,4 @@
-// CURVE on every socket (issue 17): allowed keys get frames and control by their role, a viewer key
+// CURVE on every socket: allowed keys get frames and control by their role, a viewer key
 // may ask for status but not pause and its gaze is dropped, and a stranger's key or a plaintext
 // client gets nothing and changes nothing.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// What a misbehaving client can no longer do (issue 17): stop the frames with a tiny publish_hz,
+// What a misbehaving client can no longer do: stop the frames with a tiny publish_hz,
 // grow the log with refused requests, grow memory with subscriptions, or use up the descriptors.
 #include <fcntl.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// What held before issue 17 and must keep holding: 8 subscribers, 2 gaze publishers at about 200 Hz
-// and a camera pose publisher at about 60 Hz all served at once (every subscriber keeps getting
-// frames with finite positions, both gaze sources and the pose are used); and rejected input on
-// every socket logs one line per socket per interval, whatever the flood.
+// What held before the connection limits and CURVE and must keep holding: 8 subscribers, 2 gaze
+// publishers at about 200 Hz and a camera pose publisher at about 60 Hz all served at once (every
+// subscriber keeps getting frames with finite positions, both gaze sources and the pose are used);
+// and rejected input on every socket logs one line per socket per interval, whatever the flood.
 #include <gtest/gtest.h>
 
 #include <cmath>

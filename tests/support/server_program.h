@@ -1,4 +1,4 @@
-// The built sph_server as a child process for tests that kill and restart it (issue 17's fault
+// The built sph_server as a child process for tests that kill and restart it (the fault
 // tests): the first start binds ephemeral loopback ports, a restart binds the same ones again. Each
 // start logs to its own file. Needs tests/viewer/child_process.cpp in the test binary.
 #pragma once

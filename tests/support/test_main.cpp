@@ -4,7 +4,7 @@
 // ctest runs two test programs at once on a machine that may have two cores; with libgomp's
 // default wait, a thread spinning at a barrier keeps its core while its partner in the same
 // process waits for one, and a solver with many barriers a step (pbf's Jacobi iterations) then
-// runs tens of times slower, long enough to pass a test's hang timeout.
+// runs so slowly that it passes a test's hang timeout.
 #include <gtest/gtest.h>
 
 #include "process/omp_wait.h"

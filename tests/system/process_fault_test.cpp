@@ -1,4 +1,4 @@
-// Issue 17's fault tests, with the built programs as child processes on loopback: the server and the
+// Fault tests, with the built programs as child processes on loopback: the server and the
 // gaze bridge each killed (SIGKILL) mid-stream and started again, and the stream comes back on its
 // own (ZeroMQ reconnects; nobody restarts the other side). The requirement says "within 2 s"; the
 // tests wait with a generous deadline and print the measured times instead of asserting them.

@@ -1,4 +1,4 @@
-// Issue 17's fault tests on the viewer's side, with the built programs: the viewer killed (SIGKILL)
+// Fault tests on the viewer's side, with the built programs: the viewer killed (SIGKILL)
 // and started again while the server runs on, and the server killed and started again under a
 // running viewer; and the viewer with CURVE keys. Each side must come back by itself (ZeroMQ
 // reconnects); the tests wait with a generous deadline and print the times they measured (the
