@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Fails (exit 1) when a C++ file of the repository differs from what clang-format makes of it
+# Fails (exit 1) when a C++ file (.cpp, .h, .inc) of the repository differs from what clang-format makes of it
 # (.clang-format); prints the files. `bash scripts/check_format.sh --fix` rewrites them instead.
 # The files: tracked ones and new ones not yet added (but not those .gitignore leaves out), so a
 # file is checked before its first commit, not only in CI's clean clone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cpp' '*.h')
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cpp' '*.h' '*.inc')
 if [ "${1:-}" = "--fix" ]; then
   clang-format -i "${files[@]}"
   exit 0
