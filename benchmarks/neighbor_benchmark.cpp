@@ -17,6 +17,7 @@
 #include "process/omp_wait.h"
 #include "scene/scene_loader.h"
 #include "sph/simulation.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace {
 
@@ -86,8 +87,9 @@ void BM_Density(benchmark::State& state) {
   const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
   omp_set_num_threads(static_cast<int>(state.range(0)));
   sph::ParticleSet particles = sim.particles();
+  const sph::KernelTable kernels = sph::makeKernelTable(sim.params());
   for (auto _ : state) {
-    Stage(sim.params(), sim.kernels(), sim.grid(), particles);
+    Stage(sim.params(), kernels, sim.grid(), particles);
     benchmark::ClobberMemory();
   }
   state.counters["pairs"] = static_cast<double>(sim.grid().meanNeighbors() * particles.size());
@@ -101,8 +103,9 @@ void BM_Forces(benchmark::State& state) {
   const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
   omp_set_num_threads(static_cast<int>(state.range(0)));
   sph::ParticleSet particles = sim.particles();
+  const sph::KernelTable kernels = sph::makeKernelTable(sim.params());
   for (auto _ : state) {
-    Stage(sim.params(), sim.kernels(), sim.grid(), particles, false);
+    Stage(sim.params(), kernels, sim.grid(), particles, false);
     benchmark::ClobberMemory();
   }
 }

@@ -8,18 +8,6 @@ namespace sph {
 
 const char* sizeClassName(SizeClass c) { return c == SizeClass::Small ? "SMALL" : "LARGE"; }
 
-const char* solverName(Solver s) {
-  switch (s) {
-    case Solver::kPbf:
-      return "pbf";
-    case Solver::kDfsph:
-      return "dfsph";
-    case Solver::kThesis:
-      break;
-  }
-  return "thesis";
-}
-
 namespace {
 
 SizeClassProps deriveClass(double mass, double kernel_particles, double rho0) {
@@ -121,10 +109,10 @@ namespace {
 // of two lattice spacings for both classes (x = 4/3 pi 2^3 kernel particles: about 33 neighbours,
 // and a resting lattice sums to rho0 exactly); no surface tension (the thesis's colour-field force
 // at this resolution is an artefact, not water's); the walls in the density (boundary_volume.h).
-SimParams incompressibleBase(const char* name, Solver solver) {
+SimParams incompressibleBase(const char* name) {
   SimParams p;
   p.preset = name;
-  p.solver = solver;
+  p.solver = name;
   p.kernel_particles_small = 4.0 / 3.0 * std::numbers::pi * 8.0;
   p.kernel_particles_large = p.kernel_particles_small;
   p.surface_tension_enabled = false;
@@ -135,7 +123,7 @@ SimParams incompressibleBase(const char* name, Solver solver) {
 }  // namespace
 
 SimParams pbfPreset() {
-  SimParams p = incompressibleBase("pbf", Solver::kPbf);
+  SimParams p = incompressibleBase("pbf");
   // Four solver steps of 2.5 ms a frame: each step starts from zero multipliers (pbf_solver.cpp),
   // and the compression a deep tank keeps at rest falls with dt^2; with two steps it is about 2 %,
   // with four about 0.5 %. Two iterations a step at a relaxation of 0.65 hold the tank and the
@@ -165,7 +153,7 @@ SimParams pbfPreset() {
 }
 
 SimParams dfsphPreset() {
-  SimParams p = incompressibleBase("dfsph", Solver::kDfsph);
+  SimParams p = incompressibleBase("dfsph");
   // Solver steps of at most 5 ms (SPlisHSPlasH's ceiling): in 10 ms steps a tank at rest kept
   // sloshing at 0.1-0.5 m/s; in 5 ms steps it comes to rest (docs/fluids.md).
   p.substeps = 2;

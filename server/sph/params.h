@@ -26,17 +26,10 @@ struct SizeClassProps {
   double support = 0.0;           // h = cbrt(3 V x / (4 pi)), V = m / rho0, eq. (3.8)
 };
 
-// Which fluid solver steps the particles (sph/solvers/).
-enum class Solver : std::uint8_t {
-  kThesis,  // Mueller SPH of thesis 3.3-3.5: state equation, explicit forces, semi-implicit Euler
-  kPbf,     // position based fluids
-  kDfsph,   // divergence-free SPH
-};
-const char* solverName(Solver s);
-
 struct SimParams {
   std::string preset = "thesis";
-  Solver solver = Solver::kThesis;
+  // The fluid solver that steps the particles, by its name in solvers/fluid_solver_factory.h.
+  std::string solver = "thesis";
   // Table 3.1.
   double rest_density = 998.29;     // rho0
   double viscosity = 3.5;           // mu

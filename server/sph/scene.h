@@ -51,8 +51,4 @@ Scene gatedScene(const Scene& scene);
 
 int initialParticleCount(const Scene& scene, SizeClass start_class);
 
-// Fills `out` with the scene's water on a cubic lattice of spacing cbrt(m / rho0), bottom layer first.
-// Throws std::invalid_argument when the region cannot hold the particles or lies outside the box.
-void fillWater(const Scene& scene, SizeClass start_class, ParticleSet& out);
-
 }  // namespace sph

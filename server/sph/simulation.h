@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <memory>
 
-#include "sph/fluid_stages.h"
 #include "sph/neighbor_grid.h"
 #include "sph/particles.h"
 #include "sph/scene.h"
@@ -42,7 +41,7 @@ class Simulation {
 
   const Scene& scene() const { return scene_; }
   const SimParams& params() const { return scene_.params; }
-  const KernelTable& kernels() const { return kernels_; }
+  const FluidSolver& solver() const { return *solver_; }
   double time() const { return time_; }
   std::int64_t stepCount() const { return steps_; }
   const ParticleSet& particles() const { return particles_; }
@@ -61,7 +60,6 @@ class Simulation {
   void configureGrid(bool both_classes);
 
   Scene scene_;
-  KernelTable kernels_;
   ParticleSet particles_;
   NeighborGrid grid_;
   SizeClass start_class_;

@@ -10,8 +10,8 @@
 #include "adaptive_test_util.h"
 #include "sph/adaptive/decide.h"
 #include "sph/adaptive/split_merge.h"
-#include "sph/fluid_stages.h"
 #include "sph/simd/simd_level.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace {
 
@@ -133,7 +133,7 @@ TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
 TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
   sph::Simulation sim(poolScene(0.5, 0.5, 1500), sph::SizeClass::Large);
   sim.rebuildNeighbors();
-  sph::computeDensityPressure(sim.params(), sim.kernels(), sim.grid(), sim.particles());
+  sph::computeDensityPressure(sim.params(), sph::makeKernelTable(sim.params()), sim.grid(), sim.particles());
   auto meanDensity = [&] {
     double sum = 0.0;
     for (float rho : sim.particles().density) sum += rho;
@@ -145,7 +145,7 @@ TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
   std::vector<std::uint32_t> slots;
   sph::applySplitMerge(sim, std::vector<std::int8_t>(n, sph::kSplit), std::vector<std::int32_t>(n, -1), keep, slots);
   sim.rebuildNeighbors();
-  sph::computeDensityPressure(sim.params(), sim.kernels(), sim.grid(), sim.particles());
+  sph::computeDensityPressure(sim.params(), sph::makeKernelTable(sim.params()), sim.grid(), sim.particles());
   const double after = meanDensity();
   EXPECT_LT(std::abs(after - before) / before, 0.05) << "before " << before << " after " << after;
 }
@@ -234,24 +234,22 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   expectSettlesAgain();
 }
 
-// pbf: the bound, the split raises the largest density error by at most 5 % (2-3 %; the
-// placement moves the compressed children before the constraint: 12 % without it), and no kick.
-// Before the placement rule the split step gave 0.9 m/s rms and the pool still moved at 0.24 m/s
-// 50 frames later (a LARGE pool left alone: about 0.03 m/s); before the neighbours of a merge
-// counted as placed the merge step gave 0.33 m/s. In the frames after a whole split or merge the
-// pool breathes (both solvers, 0.12-0.13 m/s at most, 0.13-0.15 before the split's roomiest axis;
-// the pool without a split about 0.04): the lift of docs/fluids.md, not met; 0.2 keeps it from
-// growing.
+// pbf: the split raises the largest density error by at most 5 %, because the placement moves the
+// compressed children before the constraint (without it the error grows well past that), and adds
+// no kick. Before the placement rule the split step threw the pool, which still moved 50 frames
+// later; before the neighbours of a merge counted as placed the merge step threw it too. In the
+// frames after a whole split or merge the pool breathes (both solvers, more than a pool without a
+// split): the lift of docs/fluids.md, not met; the 0.2 m/s peak keeps it from growing.
 TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
   expectSplittingOrMergingARestingPoolDoesNotKickIt("pbf", {6, 0.03, 0.05f, 0.2});
 }
 
-// dfsph, from rest (about 0.01 m/s after 150 frames): without the placement the split step threw
-// the pool to 3.5 m/s rms. With it the split raises the largest density error by about 0.8 %
-// (4.4 % with the drawn directions before the roomiest axis, split_axis.h; the pool rests at 1.1 %
-// since the solve holds the floor layer, floor_contact.h) but still sets the pool moving, 0.06
-// m/s, and the merge adds 0.03 m/s: more than pbf's (docs/fluids.md), so the kick's bound here is
-// 0.1 m/s. The frames after: as pbf's (the pool without a split about 0.01 m/s).
+// dfsph, from rest after 150 frames: without the placement the split step threw the pool. With it
+// the split raises the largest density error only a little (less than with the drawn directions
+// used before the roomiest axis, split_axis.h; the pool rests slightly compressed since the solve
+// holds the floor layer, floor_contact.h) but still sets the pool moving, and the merge adds to
+// that: more than pbf's (docs/fluids.md), so the kick's bound here is 0.1 m/s. The frames after:
+// as pbf's.
 TEST(SplitMerge, SplittingOrMergingARestingDfsphPoolDoesNotThrowIt) {
   expectSplittingOrMergingARestingPoolDoesNotKickIt("dfsph", {150, 0.1, 0.05f, 0.2});
 }

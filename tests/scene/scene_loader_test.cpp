@@ -6,8 +6,10 @@
 #include <fstream>
 
 #include "scene/scene_loader.h"
+#include "sph/fill_water.h"
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/solvers/fluid_solver_factory.h"
 
 namespace {
 
@@ -40,8 +42,9 @@ TEST(SceneLoader, ShippedScenesLoadAndFill) {
     const sph::Scene s = scene::loadScene(name);
     EXPECT_EQ(s.large_particles, 10000) << name;
     sph::ParticleSet small_set, large_set;
-    sph::fillWater(s, sph::SizeClass::Small, small_set);
-    sph::fillWater(s, sph::SizeClass::Large, large_set);
+    const auto solver = sph::makeFluidSolver(s);
+    sph::fillWater(s, sph::SizeClass::Small, *solver, small_set);
+    sph::fillWater(s, sph::SizeClass::Large, *solver, large_set);
     EXPECT_EQ(small_set.size(), 20000u) << name;
     EXPECT_EQ(large_set.size(), 10000u) << name;
     // The same water mass either way.
@@ -57,7 +60,7 @@ TEST(SceneLoader, FillSpreadsTheTopLayerOverTheFootprint) {
     ASSERT_TRUE(sph::presetByName(preset, s.params));
     for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
       sph::ParticleSet p;
-      sph::fillWater(s, c, p);
+      sph::fillWater(s, c, *sph::makeFluidSolver(s), p);
       float top = 0.0f;
       for (const sph::Vec3& x : p.position) top = std::max(top, x.y());
       const auto centre = (s.water.min + s.water.max).cast<float>() / 2.0f;
@@ -120,7 +123,7 @@ TEST(SceneLoader, CallersPresetReplacesTheScenesAndParamsStillApply) {
   const std::string text = withKey(R"("preset": "thesis", "params": {"xsph_viscosity": 0.05})");
   const sph::Scene s = scene::parseScene(text, "t", "dfsph");
   EXPECT_EQ(s.params.preset, "dfsph");
-  EXPECT_EQ(s.params.solver, sph::Solver::kDfsph);
+  EXPECT_EQ(s.params.solver, "dfsph");
   EXPECT_DOUBLE_EQ(s.params.xsph_viscosity, 0.05);
   EXPECT_EQ(scene::parseScene(text, "t").params.preset, "thesis");
 }
@@ -206,7 +209,7 @@ TEST(SceneLoader, WaterRegionTooSmallForTheParticlesFailsToFill) {
   const sph::Scene s = scene::parseScene(
       R"({"box": {"min": [0,0,0], "max": [1,1,1]}, "water": {"min": [0,0,0], "max": [0.1,0.1,0.1]}})", "small.json");
   sph::ParticleSet p;
-  EXPECT_THROW(sph::fillWater(s, sph::SizeClass::Small, p), std::invalid_argument);
+  EXPECT_THROW(sph::fillWater(s, sph::SizeClass::Small, *sph::makeFluidSolver(s), p), std::invalid_argument);
 }
 
 TEST(SceneLoader, MethodAdaptiveSettingsAndGazeRecordingAreRead) {

@@ -5,8 +5,8 @@
 #include <map>
 #include <tuple>
 
-#include "sph/coincident_pairs.h"
 #include "sph/simulation.h"
+#include "sph/solvers/thesis/coincident_pairs.h"
 
 namespace {
 

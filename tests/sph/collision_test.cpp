@@ -7,8 +7,8 @@
 #include <random>
 
 #include "sph/collision.h"
-#include "sph/fluid_stages.h"
 #include "sph/params.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace {
 

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sph/fluid_stages.h"
 #include "sph/neighbor_grid.h"
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <random>
 
-#include "sph/fluid_stages.h"
 #include "sph/neighbor_grid.h"
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace {
 

@@ -186,7 +186,7 @@ TEST(NeighborGrid, ListsAreExactForParticlesOnTheContainerWalls) {
   expectExactLists(p, listsOf(grid, p.size()));
 }
 
-// The vector pair loops stream a block's lists as one run of entries (fluid_stages_avx512.cpp):
+// The vector pair loops stream a block's lists as one run of entries (thesis_stages_avx512.cpp):
 // within a block, particle i + 1's list must start where i's ends; the dense cloud regrows the
 // stride, so this holds after a rebuild too.
 TEST(NeighborGrid, ListsOfABlockLieBackToBack) {

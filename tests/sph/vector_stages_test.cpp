@@ -1,4 +1,4 @@
-// The AVX-512 pair sums (fluid_stages_avx512.cpp) against the scalar reference on a cloud mixing
+// The AVX-512 pair sums (thesis_stages_avx512.cpp) against the scalar reference on a cloud mixing
 // SMALL and LARGE particles: the same density, pressure, acceleration, |n| and surface-distance
 // hop up to float rounding. Skipped where the CPU (or the build, SPH_FORCE_SCALAR) has no
 // AVX-512. The public stages run the form simdLevel() names, bit for bit.
@@ -10,11 +10,11 @@
 #include <random>
 #include <stdexcept>
 
-#include "sph/fluid_stages.h"
 #include "sph/neighbor_grid.h"
 #include "sph/params.h"
 #include "sph/particles.h"
 #include "sph/simd/simd_level.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace {
 

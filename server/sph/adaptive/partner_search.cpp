@@ -3,7 +3,6 @@
 #include <limits>
 
 #include "sph/adaptive/decide.h"
-#include "sph/fluid_stages.h"
 #include "sph/simd/simd_level.h"
 #include "sph/thread_share.h"
 

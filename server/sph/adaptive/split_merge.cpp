@@ -119,11 +119,11 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     splitting[splits] = static_cast<std::uint32_t>(i);
     splits += wantsSplit(decision[i], p.size_class[i]);
   }
-  // Where the children go (split_axis.h): on incompressible water along the roomiest axis among
-  // the parent's neighbours, on the thesis's along a direction drawn from the parent's id. The
-  // step's neighbour lists serve (the adaptive step follows the solver's); lists of another
+  // Where the children go is the solver's choice (FluidSolver::splitPlacement): along the roomiest
+  // axis among the parent's neighbours (split_axis.h) or along a direction drawn from the parent's
+  // id. The step's neighbour lists serve (the adaptive step follows the solver's); lists of another
   // particle count (a second split or merge without a step between) are built again.
-  const bool roomiest = sim.params().solver != Solver::kThesis;
+  const bool roomiest = sim.solver().splitPlacement() == SplitPlacement::kRoomiestAxis;
   if (roomiest && splits > 0 && sim.grid().neighborCounts().size() != n) sim.rebuildNeighbors();
   const std::size_t first_child = p.appendReset(splits);
   counts.splits = static_cast<int>(splits);

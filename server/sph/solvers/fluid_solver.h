@@ -1,11 +1,15 @@
 // A fluid solver advances the particles by one frame of the simulation (SimParams::time_step), in
 // as many solver steps as it takes, and builds the neighbour lists it needs (the adaptive step
-// after it reads the last ones). Which solver: the scene's preset (SimParams::solver).
-//   thesis_solver.h  Mueller SPH of thesis 3.3-3.5, one step per frame
-//   pbf_solver.h     position based fluids (Macklin & Mueller 2013)
-//   dfsph_solver.h   divergence-free SPH (Bender & Koschier 2015, 2017)
+// after it reads the last ones). Everything that differs from one solver to another is asked of
+// this interface; which solver runs is the scene's SimParams::solver, looked up by name in
+// fluid_solver_factory.h. The built-in ones, each in its folder:
+//   thesis/  Mueller SPH of thesis 3.3-3.5, one step per frame
+//   pbf/     position based fluids (Macklin & Mueller 2013)
+//   dfsph/   divergence-free SPH (Bender & Koschier 2015, 2017)
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 
 #include "sph/neighbor_grid.h"
@@ -45,6 +49,12 @@ struct FrameContext {
   SolverStats& stats;
 };
 
+// Where the two children of a split go (adaptive/split_merge.cpp).
+enum class SplitPlacement : std::uint8_t {
+  kHashedDirection,  // along a direction hashed from the parent's id (thesis 3.6.1)
+  kRoomiestAxis,     // along the roomiest axis, turned into the free surface (adaptive/split_axis.h)
+};
+
 // A solver keeps what it derives from the scene and its scratch, never a reference into the
 // simulation that owns it (the scene comes with each frame), so a Simulation can move.
 class FluidSolver {
@@ -54,11 +64,17 @@ class FluidSolver {
   // Freshly filled water (a lattice at rest density): brings it to the state in which the solver
   // holds it at rest, so that the first steps add no kick. Nothing by default (the thesis's
   // preset starts from its lattice, as the thesis did).
-  virtual void settle(const FrameContext& /*frame*/) {}
+  virtual void settleFreshWater(const FrameContext& /*frame*/) {}
+  // After each frame: what becomes of the marks the adaptive step puts on the particles it placed
+  // (ParticleSet::placed). By default they last one frame.
+  virtual void releasePlaced(ParticleSet& particles) const {
+    std::fill(particles.placed.begin(), particles.placed.end(), std::uint8_t{0});
+  }
+  virtual SplitPlacement splitPlacement() const { return SplitPlacement::kHashedDirection; }
+  // How far inside the water region's faces the fill's first lattice point sits, for particles of
+  // radius `radius` at lattice spacing `spacing`: by default half a spacing, so that the lattice
+  // tiles the region with each particle's volume.
+  virtual double fillInset(double spacing, double /*radius*/) const { return 0.5 * spacing; }
 };
-
-// The solver of `scene.params.solver`, set up for the scene's boundary (the frames must bring the
-// same scene).
-std::unique_ptr<FluidSolver> makeFluidSolver(const Scene& scene);
 
 }  // namespace sph

@@ -28,23 +28,9 @@ double latticeGradSquared(const CubicKernel& k, double spacing) {
   return sum;
 }
 
-// The nearest a particle's centre may come to a wall, in spacings. Settled water's wall layers
-// rest on it (the one-sided walls hold the water only by compressing it), and the closer they
-// sit, the more of the water's volume the walls swallow: with 0.3 both solvers' settled water
-// stood 2-3 % below the depth its mass fills at rho0 (docs/fluids.md). pbf moves particles by
-// position and holds them at half a spacing, where a lattice beside a wall reads rho0. dfsph
-// moves them by velocity: against a guard there its tank's wall layers piled up to 1.07 rho0
-// (the 1.02 allowed), so its floor stood at 0.4 until its constant-density solve held the floor
-// layer itself (floor_contact.h); now at half a spacing, within 0.5 % of rho0. The side walls and
-// obstacles need 0.3: at 0.4 the layer above the floor, pressed sideways onto the guard beside a
-// vertical edge, read up to 1.027 rho0 in tanks wider than the tests'.
-constexpr float kPbfContact = 0.5f;
-constexpr float kDfsphFloorContact = 0.5f;
-constexpr float kDfsphSideContact = 0.3f;
-
 }  // namespace
 
-IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
+IncompressibleSetup makeIncompressibleSetup(const Scene& scene, WallReach contact_spacings) {
   IncompressibleSetup s;
   const auto classes = scene.params.classes();
   s.kernels = PairKernels::forClasses({classes[0].support, classes[1].support}, {classes[0].mass, classes[1].mass});
@@ -52,9 +38,7 @@ IncompressibleSetup makeIncompressibleSetup(const Scene& scene) {
     const auto cu = static_cast<std::size_t>(c);
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
     const float spacing = s.spacing[cu];
-    s.contact[cu] = scene.params.solver == Solver::kPbf
-                        ? WallReach(kPbfContact * spacing)
-                        : WallReach(kDfsphFloorContact * spacing, kDfsphSideContact * spacing);
+    s.contact[cu] = WallReach(contact_spacings.floor * spacing, contact_spacings.sides * spacing);
     s.lattice_grad_sq[cu] = s.kernels.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
   }
   s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels.classes, s.spacing);

@@ -21,10 +21,10 @@ namespace sph {
 struct IncompressibleSetup {
   PairKernels kernels;                           // each class's kernel and particle mass
   std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
-  // The nearest a particle's centre may come to the floor and to the other walls: pbf half a
-  // spacing to all, dfsph half a spacing to the floor and 0.3 to the rest (incompressible_setup.cpp).
-  // The one-sided walls hold settled water only by compressing it, so its wall layers come to rest
-  // on these distances, not where the walls' density would put them.
+  // The nearest a particle's centre may come to the floor and to the other walls (the solver's
+  // choice, in spacings: makeIncompressibleSetup). The one-sided walls hold settled water only by
+  // compressing it, so its wall layers come to rest on these distances, not where the walls'
+  // density would put them; the closer they sit, the more of the water's volume the walls swallow.
   std::array<WallReach, kSizeClassCount> contact{};
   // On a resting lattice of the class: sum_j m_j |grad W_ij|^2 (the gradient sum itself vanishes
   // by symmetry).
@@ -32,7 +32,19 @@ struct IncompressibleSetup {
   std::unique_ptr<BoundaryVolume> boundary;
 };
 
-IncompressibleSetup makeIncompressibleSetup(const Scene& scene);
+// `contact_spacings`: IncompressibleSetup::contact in lattice spacings of each class.
+IncompressibleSetup makeIncompressibleSetup(const Scene& scene, WallReach contact_spacings = WallReach(0.5f));
+
+// Fresh water of `Solver`'s kind relaxes to rest where the scene puts it: inside a gate, the water
+// region's faces as walls (gatedScene, with their density: boundary_volume.h), so that a dam-break
+// column settles standing and is released at t = 0 instead of collapsing while it settles. The
+// settled packing and what the solver keeps per particle (its warm start) carry over.
+template <class Solver>
+void settleInGate(const FrameContext& frame) {
+  const Scene gated = gatedScene(frame.scene);
+  Solver gate(gated);
+  gate.settle({gated, frame.particles, frame.grid, 0.0, gated.params.time_step, false, frame.timings, frame.stats});
+}
 
 // The pressure of water at rest, rho0 |g| (y_top - y), y_top the top face of the highest layer:
 // the solvers' warm start for a fresh lattice (settle()).

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "sph/solvers/dfsph_solver.h"
+#include "sph/solvers/dfsph/dfsph_solver.h"
 #include "sph/solvers/ordered_sum.h"
 
 namespace sph {

@@ -1,5 +1,5 @@
 // The scalar form of the dfsph passes: dfsph_passes.inc on one lane.
-#include "sph/solvers/dfsph_passes.h"
+#include "sph/solvers/dfsph/dfsph_passes.h"
 
 #include <span>
 
@@ -7,5 +7,5 @@
 
 namespace sph::scalar {
 using Lanes = ScalarLanes;
-#include "sph/solvers/dfsph_passes.inc"
+#include "sph/solvers/dfsph/dfsph_passes.inc"
 }  // namespace sph::scalar

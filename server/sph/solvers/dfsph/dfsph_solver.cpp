@@ -1,19 +1,21 @@
-#include "sph/solvers/dfsph_solver.h"
+#include "sph/solvers/dfsph/dfsph_solver.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "sph/collision.h"
+#include "sph/phase_timer.h"
 #include "sph/simd/simd_level.h"
 
 namespace sph {
 
 namespace {
 
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
+// dfsph moves particles by velocity: it holds them half a spacing off the floor, whose layer its
+// constant-density solve holds (floor_contact.h), and 0.3 of a spacing off the side walls and
+// obstacles, where the layer above the floor, pressed sideways onto a guard beside a vertical
+// edge, would otherwise compress (IncompressibleSetup::contact).
+const WallReach kWallContact(0.5f, 0.3f);
 
 DfsphPassForms passForms() {
   return simdLevel() == SimdLevel::kAvx512 ? avx512::dfsphPassForms() : scalar::dfsphPassForms();
@@ -46,7 +48,7 @@ constexpr int kPlacedIterations = 300;
 }  // namespace
 
 DfsphSolver::DfsphSolver(const Scene& scene)
-    : setup_(makeIncompressibleSetup(scene)), placement_constants_(pbfConstantsOf(scene.params, setup_)) {
+    : setup_(makeIncompressibleSetup(scene, kWallContact)), placement_constants_(pbfConstantsOf(scene.params, setup_)) {
   constants_.kernels = setup_.kernels;
   constants_.rest_density = static_cast<float>(scene.params.rest_density);
   constants_.boundary = setup_.boundary.get();
@@ -92,13 +94,13 @@ void DfsphSolver::advance(const FrameContext& frame) {
 }
 
 void DfsphSolver::placeFresh(const FrameContext& frame) {
-  const auto t = std::chrono::steady_clock::now();
+  PhaseTimer timer(frame.timings.density_pressure_ms);
   placement_constants_.box = frame.scene.boundary.stateAt(frame.time);
   placement_constants_.obstacles = &frame.scene.boundary;
   frame.stats.placement_iterations +=
       placement_.placeFresh(frame.particles, frame.grid, LocalPlacement::Grid::kBuild, placement_constants_,
                             kPlacedCompression * constants_.rest_density, kPlacedIterations);
-  frame.timings.density_pressure_ms += msSince(t);
+  timer.stop();
 }
 
 void DfsphSolver::pressureAccelerations(const DfsphPassForms& forms, const NeighborGrid& grid, bool held) {
@@ -193,10 +195,10 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   constants_.box = frame.scene.boundary.stateAt(t0 + dt);
   velocity_constants_.dt = dt;
 
-  auto t = std::chrono::steady_clock::now();
+  PhaseTimer timer(frame.timings.neighbor_ms);
   frame.grid.build(p);
   arrays_.pair_grad = pair_grad_.fit(frame.grid);
-  frame.timings.neighbor_ms += msSince(t);
+  timer.stop();
 
   DfsphArrays& a = arrays_;
   a.n = n;
@@ -213,16 +215,16 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   a.acceleration = acceleration_.data()->data();
 
   // Densities, then the divergence solver on the new neighbourhoods (BK17 algorithm 1).
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.density_pressure_ms);
   passForms().density(a, constants_, frame.grid);
   if (frame.scene.params.divergence_tolerance > 0.0) {
     frame.stats.divergence_iterations += solve(frame, p.kappa_divergence, false, dt);
   }
-  frame.timings.density_pressure_ms += msSince(t);
+  timer.stop();
 
   // Gravity, and in the frame's last step XSPH viscosity for the whole frame (xsphOfFrame; with
   // |n| and the surface-distance hop for the adaptive step).
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.accel_integrate_collide_ms);
   const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p.velocity[i] += dt * gravity;
@@ -232,15 +234,15 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
     dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
     p.velocity.swap(next_velocity_);
   }
-  frame.timings.accel_integrate_collide_ms += msSince(t);
+  timer.stop();
 
   // The constant-density solver.
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.density_pressure_ms);
   frame.stats.iterations += solve(frame, p.kappa, true, dt);
-  frame.timings.density_pressure_ms += msSince(t);
+  timer.stop();
 
   // Positions, kept inside (a guard), and the attributes the frames and the adaptive step read.
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.accel_integrate_collide_ms);
   const float rho0 = constants_.rest_density;
   double error = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : error)
@@ -255,7 +257,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
     error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);
   }
   frame.stats.density_error = n > 0 ? static_cast<float>(error / static_cast<double>(n)) : 0.0f;
-  frame.timings.accel_integrate_collide_ms += msSince(t);
+  timer.stop();
 }
 
 }  // namespace sph

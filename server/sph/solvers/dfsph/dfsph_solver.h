@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "sph/solvers/dfsph_passes.h"
+#include "sph/solvers/dfsph/dfsph_passes.h"
 #include "sph/solvers/floor_contact.h"
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
@@ -27,8 +27,10 @@ class DfsphSolver : public FluidSolver {
  public:
   explicit DfsphSolver(const Scene& scene);
   void advance(const FrameContext& frame) override;
+  void settleFreshWater(const FrameContext& frame) override { settleInGate<DfsphSolver>(frame); }
+  SplitPlacement splitPlacement() const override { return SplitPlacement::kRoomiestAxis; }
   // Fresh water starts as sampled, with the pressure of water at rest as the warm start.
-  void settle(const FrameContext& frame) override;
+  void settle(const FrameContext& frame);
 
  private:
   // Moves the particles the adaptive step placed after the last frame apart (local_placement.h).

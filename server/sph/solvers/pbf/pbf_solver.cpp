@@ -1,11 +1,11 @@
-#include "sph/solvers/pbf_solver.h"
+#include "sph/solvers/pbf/pbf_solver.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <string>
 
 #include "sph/collision.h"
+#include "sph/phase_timer.h"
 #include "sph/solvers/ordered_sum.h"
 #include "sph/thread_share.h"
 
@@ -13,9 +13,9 @@ namespace sph {
 
 namespace {
 
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
+// pbf moves particles by position and holds them half a spacing off every wall, where a lattice
+// beside a wall reads rho0 (IncompressibleSetup::contact).
+const WallReach kWallContact(0.5f);
 
 // At most this many frames relax fresh water (incompressible_setup.h).
 constexpr int kSettleFrames = 200;
@@ -66,7 +66,7 @@ constexpr int kPlacedIterations = 21;
 }  // namespace
 
 PbfSolver::PbfSolver(const Scene& scene)
-    : setup_(makeIncompressibleSetup(scene)), constants_(pbfConstantsOf(scene.params, setup_)) {
+    : setup_(makeIncompressibleSetup(scene, kWallContact)), constants_(pbfConstantsOf(scene.params, setup_)) {
   const SimParams& p = scene.params;
   velocity_constants_.kernels = setup_.kernels;
   velocity_constants_.vorticity_epsilon = static_cast<float>(p.vorticity_confinement);
@@ -102,7 +102,7 @@ void PbfSolver::advance(const FrameContext& frame) {
   }
 }
 
-float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool first, bool last) {
+void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool first, bool last) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
   const std::size_t room = p.capacity();
@@ -118,7 +118,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fi
   const PbfPassForms forms = dispatchedPbfPassForms();
 
   // Predict (MM13 algorithm 1, lines 1-4): gravity, then the positions it leads to.
-  auto t = std::chrono::steady_clock::now();
+  PhaseTimer timer(frame.timings.accel_integrate_collide_ms);
   const Vec3 gravity(0.0f, static_cast<float>(frame.scene.params.gravity), 0.0f);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -130,21 +130,21 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fi
                     unused_velocity);
     p.position[i] = x;
   }
-  frame.timings.accel_integrate_collide_ms += msSince(t);
+  timer.stop();
 
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.neighbor_ms);
   frame.grid.build(p);
   markNearPlacements(frame.grid, p);
-  frame.timings.neighbor_ms += msSince(t);
+  timer.stop();
 
   // The frame's fresh placements to their places (local_placement.h), by position: their start
   // positions move with them, so the step's velocities do not see the placement.
   if (first) {
-    t = std::chrono::steady_clock::now();
+    timer.start(frame.timings.density_pressure_ms);
     frame.stats.placement_iterations +=
         placement_.placeFresh(p, frame.grid, LocalPlacement::Grid::kCurrent, constants_,
                               kPlacedCompression * constants_.rest_density, kPlacedIterations, old_position_);
-    frame.timings.density_pressure_ms += msSince(t);
+    timer.stop();
   }
 
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
@@ -166,7 +166,7 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fi
   // (before that iteration's correction, so one more than needed) exceeds the tolerance: a fixed
   // count carries the pressure only so many neighbourhoods a step, and deep water stays
   // compressed (docs/fluids.md).
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.density_pressure_ms);
   std::fill_n(lambda_.begin(), n, 0.0f);
   const SimParams& params = frame.scene.params;
   const int least = params.pbf_iterations;
@@ -185,20 +185,18 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fi
     ++iterations;
   }
   frame.stats.iterations += iterations;
-  frame.timings.density_pressure_ms += msSince(t);
+  timer.stop();
 
   // Velocities from the displacement (line 21), XSPH and vorticity confinement (line 22). A particle
   // the adaptive step placed (particle_attributes.h, `placed`) may be slowed or turned by its
   // correction but never made faster than its predicted velocity: the constraint moving a split's
   // children apart is placement, not motion, and made velocity it kicks a resting pool
   // (SplitMerge.SplittingOrMergingARestingPbfPoolDoesNotKickIt).
-  t = std::chrono::steady_clock::now();
+  timer.start(frame.timings.accel_integrate_collide_ms);
   const float inv_dt = 1.0f / dt;
-  float moved = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : moved)
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 step = p.position[i] - old_position_[i];
-    moved = std::max(moved, step.norm());
     Vec3 velocity = step * inv_dt;
     if (p.placed[i] != 0) {
       const float predicted = p.velocity[i].norm();
@@ -233,8 +231,6 @@ float PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fi
     error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);
   }
   frame.stats.density_error = n > 0 ? static_cast<float>(error / static_cast<double>(n)) : 0.0f;
-  frame.timings.accel_integrate_collide_ms += msSince(t);
-  return moved;
 }
 
 }  // namespace sph

@@ -8,7 +8,7 @@
 // grows with the depth and with dt^2 and falls with the iterations, so the preset takes four steps
 // a frame of at least three iterations each, more where the mean compression is over its
 // tolerance (params.cpp). The mean of the steps' multipliers gives the pressure the frames show.
-// Fresh water is relaxed at rest first (settle: incompressible_setup.h).
+// Fresh water is relaxed at rest first (settleInGate, relaxAtRest: incompressible_setup.h).
 #pragma once
 
 #include <vector>
@@ -25,11 +25,16 @@ class PbfSolver : public FluidSolver {
  public:
   explicit PbfSolver(const Scene& scene);
   void advance(const FrameContext& frame) override;
-  void settle(const FrameContext& frame) override;
+  void settleFreshWater(const FrameContext& frame) override { settleInGate<PbfSolver>(frame); }
+  // A placed particle keeps its mark until its density constraint holds it (pbf_solver.cpp).
+  void releasePlaced(ParticleSet& /*particles*/) const override {}
+  SplitPlacement splitPlacement() const override { return SplitPlacement::kRoomiestAxis; }
+  // Relaxes fresh water at rest where it stands (relaxAtRest); settleFreshWater does it in a gate.
+  void settle(const FrameContext& frame);
 
  private:
-  // Returns the largest distance a particle moved. `first`, `last`: the frame's first and last step.
-  float substep(const FrameContext& frame, double t0, float dt, bool first, bool last);
+  // `first`, `last`: the frame's first and last step.
+  void substep(const FrameContext& frame, double t0, float dt, bool first, bool last);
 
   IncompressibleSetup setup_;
   PbfConstants constants_;

@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "sph/fluid_stages.h"
 #include "sph/hashed_direction.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace sph {
 

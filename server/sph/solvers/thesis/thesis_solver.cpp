@@ -1,45 +1,27 @@
-#include "sph/solvers/thesis_solver.h"
+#include "sph/solvers/thesis/thesis_solver.h"
 
-#include <chrono>
-
-#include "sph/solvers/dfsph_solver.h"
-#include "sph/solvers/pbf_solver.h"
+#include "sph/phase_timer.h"
 
 namespace sph {
-
-namespace {
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-}  // namespace
 
 ThesisSolver::ThesisSolver(const Scene& scene) : kernels_(makeKernelTable(scene.params)) {}
 
 void ThesisSolver::advance(const FrameContext& f) {
-  auto t = std::chrono::steady_clock::now();
+  PhaseTimer timer(f.timings.neighbor_ms);
   f.grid.build(f.particles);
-  f.timings.neighbor_ms += msSince(t);
 
-  t = std::chrono::steady_clock::now();
+  timer.start(f.timings.density_pressure_ms);
   computeDensityPressure(f.scene.params, kernels_, f.grid, f.particles);
-  f.timings.density_pressure_ms += msSince(t);
 
-  t = std::chrono::steady_clock::now();
+  timer.start(f.timings.accel_integrate_collide_ms);
   computeAccelerations(f.scene.params, kernels_, f.grid, f.particles, f.track_surface_distance);
   integrateAndCollide(f.scene.params, f.scene.boundary, f.scene.boundary.stateAt(f.time + f.dt), f.particles);
-  f.timings.accel_integrate_collide_ms += msSince(t);
 }
 
-std::unique_ptr<FluidSolver> makeFluidSolver(const Scene& scene) {
-  switch (scene.params.solver) {
-    case Solver::kPbf:
-      return std::make_unique<PbfSolver>(scene);
-    case Solver::kDfsph:
-      return std::make_unique<DfsphSolver>(scene);
-    case Solver::kThesis:
-      break;
-  }
-  return std::make_unique<ThesisSolver>(scene);
+double ThesisSolver::fillInset(double spacing, double radius) const {
+  // The thesis's collision keeps a particle a radius off a wall (3.29): the first lattice point
+  // sits a radius in where that is more than half a spacing, so no particle starts in contact.
+  return std::max(0.5 * spacing, radius);
 }
 
 }  // namespace sph

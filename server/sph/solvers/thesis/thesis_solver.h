@@ -2,8 +2,10 @@
 // viscosity, gravity and surface-tension forces, semi-implicit Euler, collisions: one step a frame.
 #pragma once
 
-#include "sph/fluid_stages.h"
+#include <algorithm>
+
 #include "sph/solvers/fluid_solver.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 namespace sph {
 
@@ -11,6 +13,7 @@ class ThesisSolver : public FluidSolver {
  public:
   explicit ThesisSolver(const Scene& scene);
   void advance(const FrameContext& frame) override;
+  double fillInset(double spacing, double radius) const override;
 
  private:
   KernelTable kernels_;

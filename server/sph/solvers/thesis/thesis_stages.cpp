@@ -1,12 +1,12 @@
-#include "sph/fluid_stages.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 #include <cmath>
 #include <limits>
 
-#include "sph/coincident_pairs.h"
 #include "sph/collision.h"
-#include "sph/fluid_stage_ends.h"
 #include "sph/simd/simd_level.h"
+#include "sph/solvers/thesis/coincident_pairs.h"
+#include "sph/solvers/thesis/thesis_stage_ends.h"
 #include "sph/thread_share.h"
 
 namespace sph {
@@ -113,7 +113,7 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
 }  // namespace scalar
 
 namespace scalar {
-#include "sph/bare_box_integration.inc"
+#include "sph/solvers/thesis/bare_box_integration.inc"
 }  // namespace scalar
 
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box, ParticleSet& p) {

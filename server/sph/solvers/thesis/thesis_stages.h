@@ -10,16 +10,11 @@
 #include "sph/neighbor_grid.h"
 #include "sph/params.h"
 #include "sph/particles.h"
+#include "sph/thread_share.h"
 
 namespace sph {
 
 using KernelTable = std::array<KernelConstants, kSizeClassCount>;
-
-// Particles per chunk of the pair loops, which threads take as they come free: the cost of a
-// particle varies with its class and neighbour count, and adaptive runs keep the costly SMALL
-// particles together at the end of the arrays. Each particle's sums are its own, so the result
-// does not depend on which thread takes which chunk.
-inline constexpr int kPairLoopChunk = 256;
 
 KernelTable makeKernelTable(const SimParams& params);
 

@@ -1,4 +1,4 @@
-// AVX-512 forms of the two pair-sum stages of fluid_stages.h: 16 neighbours per instruction, the
+// AVX-512 forms of the two pair-sum stages of thesis_stages.h: 16 neighbours per instruction, the
 // neighbour attributes gathered by index, batches running on from one particle's list into the
 // next's. Each particle still sums its own neighbours in list order (lane sums, then one fixed
 // horizontal reduction) and which lanes they take depends only on the lists' layout, so the
@@ -6,11 +6,11 @@
 #include <cmath>
 #include <limits>
 
-#include "sph/coincident_pairs.h"
-#include "sph/fluid_stage_ends.h"
-#include "sph/fluid_stages.h"
 #include "sph/simd/avx512_lanes.h"
 #include "sph/simd/avx512_target.h"
+#include "sph/solvers/thesis/coincident_pairs.h"
+#include "sph/solvers/thesis/thesis_stage_ends.h"
+#include "sph/solvers/thesis/thesis_stages.h"
 
 SPH_AVX512_BEGIN
 
@@ -441,7 +441,7 @@ class ForceStage {
 
 }  // namespace
 
-#include "sph/bare_box_integration.inc"
+#include "sph/solvers/thesis/bare_box_integration.inc"
 
 // Each stage gets its SizeClassLanes (shared, read-only) and KernelBlend (its own scratch) from
 // outside: a batch reads its kernel constants through pointers into them, and while they were

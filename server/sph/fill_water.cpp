@@ -1,0 +1,61 @@
+#include "sph/fill_water.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sph {
+
+void fillWater(const Scene& scene, SizeClass start_class, const FluidSolver& solver, ParticleSet& out) {
+  const SizeClassProps props = scene.params.classes()[classIndex(start_class)];
+  const int count = initialParticleCount(scene, start_class);
+  const double spacing = std::cbrt(props.mass / scene.params.rest_density);
+  const double inset = solver.fillInset(spacing, props.radius);
+  int cells[3];
+  for (int a = 0; a < 3; ++a) {
+    const double room = scene.water.max[a] - scene.water.min[a] - 2.0 * inset;
+    cells[a] = room < 0.0 ? 0 : static_cast<int>(std::floor(room / spacing)) + 1;
+  }
+  const long capacity = static_cast<long>(cells[0]) * cells[1] * cells[2];
+  if (capacity < count) {
+    throw std::invalid_argument(scene.source + ": water region holds " + std::to_string(capacity) + " " +
+                                sizeClassName(start_class) + " particles at spacing " + std::to_string(spacing) +
+                                ", the scene needs " + std::to_string(count));
+  }
+  if (static_cast<std::size_t>(count) > out.capacity()) {
+    throw std::invalid_argument(scene.source + ": " + std::to_string(count) + " particles exceed the capacity of " +
+                                std::to_string(out.capacity()));
+  }
+  out.clear();
+  // The lowest layers full, and the particles left over for the top layer spread evenly over its
+  // cells (every cell whose share of them, in row order, reaches a new whole): filled row by row
+  // they would cover one side of the footprint, a step in the surface a spacing high that sets the
+  // water sloshing towards the bare side as soon as it moves (docs/fluids.md, "Water starts at
+  // rest").
+  const long per_layer = static_cast<long>(cells[0]) * cells[2];
+  const long full_layers = per_layer > 0 ? count / per_layer : 0;
+  const long top = count - full_layers * per_layer;
+  for (long y = 0; y <= full_layers && y < cells[1]; ++y) {
+    for (long c = 0; c < per_layer; ++c) {
+      if (y == full_layers && (c + 1) * top / per_layer == c * top / per_layer) continue;
+      const long z = c / cells[0];
+      const long x = c % cells[0];
+      const Eigen::Vector3d p = scene.water.min + Eigen::Vector3d(inset + static_cast<double>(x) * spacing,
+                                                                  inset + static_cast<double>(y) * spacing,
+                                                                  inset + static_cast<double>(z) * spacing);
+      out.add(p.cast<float>(), Vec3::Zero(), start_class, props);
+    }
+  }
+  const BoxState box = scene.boundary.stateAt(0.0);
+  const auto margin = static_cast<float>(inset);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Vec3& p = out.position[i];
+    for (int a = 0; a < 3; ++a) {
+      if (p[a] - margin < box.min[a] - 1e-6f || p[a] + margin > box.max[a] + 1e-6f) {
+        throw std::invalid_argument(scene.source + ": key 'water' places particles outside 'box'");
+      }
+    }
+  }
+}
+
+}  // namespace sph

@@ -1,0 +1,15 @@
+// Fresh water: the scene's water region filled with particles of one class at rest density.
+#pragma once
+
+#include "sph/particles.h"
+#include "sph/scene.h"
+#include "sph/solvers/fluid_solver.h"
+
+namespace sph {
+
+// Fills `out` with the scene's water on a cubic lattice of spacing cbrt(m / rho0), bottom layer
+// first, the first point `solver`'s fill inset in from the region's faces.
+// Throws std::invalid_argument when the region cannot hold the particles or lies outside the box.
+void fillWater(const Scene& scene, SizeClass start_class, const FluidSolver& solver, ParticleSet& out);
+
+}  // namespace sph
