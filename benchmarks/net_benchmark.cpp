@@ -1,9 +1,9 @@
-// Benchmarks of sph_server's network path (issue 4, docs/design.md section 8). Figures, not tests:
+// Benchmarks of sph_server's network path (aims: docs/design.md section 8). Figures, not tests:
 //   EncodePublish/<encoding>: encode a 20,000-particle frame and publish it on an XPUB with one
 //     reading subscriber (target <= 1 ms).
 //   GazeToRefinedFrame/<scene>: real-time server (gaze method, 60 frames/s; dambreak, then a
 //     1,000-particle pool); a client sends a gaze sample and times until the first frame whose
-//     adaptive step used it (p50, p99; target p99 <= 12 ms, issue 17), and counts the frames it
+//     adaptive step used it (p50, p99; target p99 <= 12 ms), and counts the frames it
 //     received per second meanwhile (the early frames for new gaze must not raise it much).
 //   StepRate/<subscribers>: free-run regular dambreak (20,000 SMALL) with 0 or 8 subscribers reading
 //     every frame at 60 frames/s (target: 8 cost <= 5 %).
@@ -38,8 +38,8 @@ app::ServerOptions benchOptions(sph::Method method, int scene = 0) {
   o.sim.scene = scene == 0 ? "dambreak" : "tiny_pool";
   o.sim.scene_dir = scene == 0 ? scene::defaultSceneDir() : SPH_NET_TEST_SCENE_DIR;
   o.sim.method = method;
-  // The small pool steps in about a millisecond on one thread; two OpenMP threads would only add
-  // barrier waits on a loaded machine.
+  // The small pool's step is too short to share: two OpenMP threads would only add barrier waits
+  // on a loaded machine.
   o.sim.threads = scene == 0 ? kThreads : 1;
   o.sim.status_interval_s = 0.0;
   o.sim.settings.publish_hz = 60.0;

@@ -1,4 +1,4 @@
-# Install rules and the Debian package (issue 19). Layout under the prefix:
+# Install rules and the Debian package. Layout under the prefix:
 #   bin/                               every program, sph_load included
 #   share/gaze-adaptive-sph/scenes/    the shipped scenes and their gaze recordings (found by the
 #                                      programs relative to their own bin/, see scene_loader.cpp)

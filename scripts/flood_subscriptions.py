@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Subscription flood against a running sph_server (issue 17), measured by hand, never in a test.
+"""Subscription flood against a running sph_server, measured by hand, never in a test.
 
 One XSUB peer sends COUNT distinct subscriptions of SIZE bytes to the frames socket, then leaves.
 Prints the server's resident memory (from /proc/PID/status) before, during and after, the

@@ -24,7 +24,7 @@ const std::vector<FrontPoint>& martinMoyceN2();
 // The initial column as the particles fill it: the width a (from the wall at x = wall_x to the
 // edge of the particles' volumes, m / rho0 each), the height above y = 0, and how compressed the
 // water is when released (a deep column held by too few solver iterations stands short and
-// pushes off early: docs/performance.md).
+// pushes off early: docs/fluids.md, "pbf: position based fluids", iterations to a tolerance).
 struct Column {
   double width = 0.0;
   double height = 0.0;

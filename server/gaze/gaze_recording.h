@@ -1,4 +1,4 @@
-// Gaze recordings: a plain CSV file of screen-space gaze samples (docs/design.md section 3).
+// Gaze recordings: a plain CSV file of screen-space gaze samples (the README, "Scene files").
 //
 // Format:
 //   # comment lines start with '#', blank lines are ignored

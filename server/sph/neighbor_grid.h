@@ -101,7 +101,7 @@ class NeighborGrid {
   std::vector<std::size_t> neighbor_start_;  // where each list begins in neighbor_index_
   // Room for particles x stride_. A block's particles [b, e) own slots [b, e) x stride_ and pack
   // their lists from the start of that range: the pair loops then stream the lists instead of
-  // touching a fresh cache line for each particle (a fixed stride left 3/4 of each row empty).
+  // touching a fresh cache line for each particle (a fixed stride left most of each row empty).
   std::vector<std::uint32_t> neighbor_index_;
 };
 

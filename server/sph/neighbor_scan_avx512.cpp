@@ -36,7 +36,7 @@ struct LaneTarget {
 
   // Appends the candidates of one batch (x, y, z, half support, index on the live lanes) within
   // reach, eq. (3.34), in candidate order. Compress in a register and store all 16 lanes while
-  // the range has room for them (a compress-store straight to memory is several times slower on
+  // the range has room for them (a compress-store straight to memory is far slower on
   // current cores; the lanes past the list land where the next list will be written); near the
   // end of the range store only the accepted lanes, so no write leaves it. Past `capacity` the
   // writes stop but the count still grows (build() then regrows the stride).

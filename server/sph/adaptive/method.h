@@ -31,11 +31,11 @@ struct AdaptiveConfig {
   bool surface_includes_walls = true;
   // A particle is a surface particle for (3.44) where |n| >= surface_normal_scale * l. The thesis
   // uses l itself (scale 1). With mixed sizes the colour field at the SMALL/LARGE interface inside
-  // the fluid reaches about 1.2 l, and at scale 1 (or 1.5) the split band creeps inwards step by
+  // the fluid exceeds l, and at scale 1 (or 1.5) the split band creeps inwards step by
   // step; 2 stops that on a resting pool (tests/adaptive) and still finds the free surface.
   double surface_normal_scale = 2.0;
-  // Gaze circle radius as a fraction of the viewport width (docs/design.md: 2.5 degrees at 600 mm from
-  // a 531 mm wide screen, or the thesis's "5 % view"; both about 0.05).
+  // Gaze circle radius as a fraction of the viewport width (docs/design.md section 3: 2.5 degrees at
+  // 600 mm from a 531 mm wide screen, or the thesis's "5 % view"; both about 0.05).
   double gaze_radius = 0.05;
   // Outer radius of the hysteresis ring, same units, >= gaze_radius: between the two, particles
   // REMAIN, so a jittering gaze does not split and merge the same particles every step.

@@ -26,9 +26,9 @@ float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, f
 // LARGE half-spacing from the wall, which is all but the SMALL radius the children keep off it,
 // so along a direction into the wall its children landed on one point; nothing separates two
 // particles on one point (the kernel's gradient vanishes there), and the doubled mass kicked the
-// water around it (a dfsph tank split by the surface method: 0.74 m/s rms, 0.43 with the children
-// turned). Unchanged where no wall is that close, and where every axis is (a box hardly larger
-// than a particle).
+// water around it (a dfsph tank split by the surface method moved much faster than with the
+// children turned). Unchanged where no wall is that close, and where every axis is (a box hardly
+// larger than a particle).
 Vec3 alongWalls(const Vec3& centre, const Vec3& dir, const BoxState& box, float margin, float wanted) {
   Vec3 along = dir;
   for (int a = 0; a < 3; ++a) {

@@ -20,10 +20,10 @@ Vec3 childOffsetInBox(const Vec3& centre, const Vec3& dir, const BoxState& box, 
 // children keep the farthest from particle i's neighbours and from each other, the nearest of
 // them deciding. The candidates are the cubes' diagonals, the face diagonals and the axes; where
 // the neighbours lie to one side (the free surface) they are first turned into the plane across
-// that side (unturned, the most room there is out of the water). In a resting pool split whole a
-// drawn direction put one child in ten within 0.49 SMALL spacings of another particle, the
-// roomiest axis within 0.58; the split's compression and kick follow (docs/fluids.md, "Where the
-// children go").
+// that side (unturned, the most room there is out of the water). In a resting pool split whole
+// the roomiest axis keeps the closest children farther from other particles than drawn directions
+// do, and the split's compression and kick follow from how close they come (docs/fluids.md, "Where
+// the children go").
 Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::size_t i, const BoxState& box,
                          float margin, float wanted);
 

@@ -9,11 +9,11 @@ namespace {
 // counts too.
 constexpr float kBand = 0.01f;
 
-// The share of a held particle's slip along the floor taken away each solver step (the steps are
-// 2-3 a frame, CFL-bounded). With none, the floor layer slid and the validation tank kept moving
-// (12 mm/s after 8 s); with all of it (the slip stopped each step) the tests' tanks' wall layers
-// read 1.03 rho0. 0.1 and 0.5 also brought them to rest; 0.3 is what was measured throughout
-// (docs/fluids.md, "Walls that count").
+// The share of a held particle's slip along the floor taken away each solver step (a few a frame,
+// CFL-bounded). With none, the floor layer slid and the validation tank kept moving; with all of it
+// (the slip stopped each step) the tests' tanks' wall layers read compressed. 0.1 and 0.5 also
+// brought them to rest; 0.3 is the value the tanks were checked with throughout (docs/fluids.md,
+// "dfsph: divergence-free SPH", the floor held by the solve).
 constexpr float kSlipLoss = 0.3f;
 
 constexpr int kFloorAxis = 1;

@@ -4,9 +4,9 @@
 // holds water on the floor by compressing it, and it does not know the guard that keeps particles
 // off a wall (collision.h, IncompressibleSetup::contact): it counts on moving the floor layer into
 // the floor, the guard undoes that after the step, and the layer above stays compressed. The
-// settled dam break stood 2.2 % below the depth its mass fills, its second layer 1-1.5 % over rho0,
-// and the floor's guard had to sit at 0.4 spacings (at half a spacing the floor layer piled up to
-// 1.07 rho0).
+// settled dam break stood below the depth its mass fills, its second layer over rho0, and the
+// floor's guard had to sit closer than half a spacing (at half a spacing the floor layer piled
+// up).
 //
 // Here the solve knows the floor. A particle whose velocity would carry it onto the floor's guard
 // (or within kBand of it) in the step is held: its velocity into the floor is removed before the
@@ -14,15 +14,16 @@
 // pressure acceleration in every iteration, so that the pressure lifts the water above it instead
 // of pressing it down. A held particle that also reaches a side wall's guard (the floor's edges
 // and corners) is held along that wall's normal as well: otherwise the solve, pressing it into the
-// side guard it does not know, slid it along the edge (a whole split pool's edge particles met at
-// 0.3-0.4 m/s, 1.08 rho0). Only the floor and its edges: gravity keeps the floor layer on the
+// side guard it does not know, slid it along the edge (a whole split pool's edge particles met
+// there fast and compressed). Only the floor and its edges: gravity keeps the floor layer on the
 // floor, where a side wall's layer leaves it and comes back; held at every wall, the tests' tanks
-// kept moving at 7-20 mm/s.
+// kept moving.
 //
 // The held particles' velocity along the floor relaxes to the floor's, a share each step: a
-// no-slip floor, applied softly. Without it the floor layer, no longer pressed into the floor, slides:
-// the validation tank moved at 12 mm/s after 8 s; stopped dead each step, the wall layers read
-// 1.03 rho0. Measured (docs/fluids.md, "Walls that count").
+// no-slip floor, applied softly. Without it the floor layer, no longer pressed into the floor, slides
+// and the validation tank keeps moving; stopped dead each step, the wall layers read compressed
+// (floor_contact.cpp, kSlipLoss; docs/fluids.md, "dfsph: divergence-free SPH", the floor held by
+// the solve).
 #pragma once
 
 #include <array>

@@ -8,10 +8,10 @@
 // dfsph before its first step, since it moves particles only through velocities and would turn
 // the overlap of a split into speed; pbf in its first step, after the prediction and before the
 // constraint, carrying the step's start positions along, since it takes velocities from the
-// step's displacements. Run after pbf's constraint (until 2026-12-05), the placement's moves
-// became velocity, which its speed rule for placed particles scaled down whole, the water's own
-// motion with it: the Martin & Moyce front on the surface method, whose water is split and merged
-// as its surface moves, fell 9 % behind the experiment (docs/fluids.md).
+// step's displacements. Run after pbf's constraint, the placement's moves became velocity, which
+// its speed rule for placed particles scaled down whole, the water's own motion with it: the
+// Martin & Moyce front on the surface method, whose water is split and merged as its surface
+// moves, fell behind the experiment (docs/fluids.md, "Placement" and "Validation").
 #pragma once
 
 #include <cstdint>

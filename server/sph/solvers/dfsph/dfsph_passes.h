@@ -15,8 +15,9 @@
 //                 none of their own, so the solve's system is the symmetric D(M^-1 D^T) of the
 //                 fluid and the wall. Mirrored walls (k_b = k_i, with the hydrostatic rise below
 //                 the particle after Band et al. 2018) hold a lattice at rest exactly, but the
-//                 step gains energy from them: a 48-layer column started at rest blew up from its
-//                 floor within 8 frames, while one-sided walls hold the tank (docs/fluids.md).
+//                 step gains energy from them: a deep column started at rest blew up from its
+//                 floor within a few frames, while one-sided walls hold the tank (docs/fluids.md,
+//                 "Walls that count").
 #pragma once
 
 #include <array>

@@ -20,14 +20,15 @@ const WallReach kWallContact(0.5f);
 // At most this many frames relax fresh water (incompressible_setup.h).
 constexpr int kSettleFrames = 200;
 
-// A placed particle counts as in place once its density is within this of rest density (about
-// twice what a deep tank keeps at rest).
+// A placed particle counts as in place once its density is within this of rest density (looser
+// than the compression a deep tank keeps at rest, so placed particles in resting water are in
+// place).
 constexpr float kPlacedDensity = 1.01f;
 
 // `placed` (particle_attributes.h): kPlacedThisFrame (kMark) in the frame after the adaptive step
 // placed the particle, then kPlacedEarlier until it is in place. Its neighbours in that frame are
-// kNearPlacement: what the constraint does to them then answers the placement too (the unmerged
-// neighbours of a merge took 0.43 m/s rms from a resting pool without it).
+// kNearPlacement: what the constraint does to them then answers the placement too (without it the
+// unmerged neighbours of a merge kicked a resting pool).
 constexpr std::uint8_t kPlacedEarlier = 2;
 constexpr std::uint8_t kNearPlacement = 3;
 
@@ -57,7 +58,7 @@ void markNearPlacements(const NeighborGrid& grid, ParticleSet& p) {
 // than rest density, if more) are moved by position, with their neighbourhoods, for up to
 // kPlacedIterations local iterations (local_placement.h): only they and their neighbours update
 // their multipliers, and only the particles those reach move. Splitting every particle of a
-// resting pool then compresses it 2 % more, 11 % without
+// resting pool then compresses it far less than without the placement
 // (SplitMerge.SplittingOrMergingARestingPbfPoolDoesNotKickIt); a handful of splits costs a handful
 // of neighbourhoods, and the compression the flow itself brings (an impact) nothing.
 constexpr float kPlacedCompression = 0.03f;
@@ -82,7 +83,7 @@ void PbfSolver::advance(const FrameContext& frame) {
   ParticleSet& p = frame.particles;
   // The frame's pressure is the mean of its steps': where the iterations a step takes vary (the
   // density tolerance), one step's multipliers push more or less than the weight above them, and
-  // the last step's alone gave a deep column's pressure slope as 0.66 rho0 g (the mean: 0.99-1.05).
+  // the last step's alone misread a deep column's pressure slope, where the mean reads rho0 g.
   // Each step adds its pressure to pressure_sum_ (nothing reads p.pressure between the steps).
   pressure_sum_.reserve(p.capacity());
   pressure_sum_.assign(p.size(), 0.0f);
@@ -165,7 +166,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
   // At least pbf_iterations; past them, on while the compression the last lambda pass measured
   // (before that iteration's correction, so one more than needed) exceeds the tolerance: a fixed
   // count carries the pressure only so many neighbourhoods a step, and deep water stays
-  // compressed (docs/fluids.md).
+  // compressed (docs/fluids.md, "pbf: position based fluids", iterations to a tolerance).
   timer.start(frame.timings.density_pressure_ms);
   std::fill_n(lambda_.begin(), n, 0.0f);
   const SimParams& params = frame.scene.params;

@@ -5,9 +5,9 @@
 //
 // Each step solves from zero multipliers (pbf_solver.cpp says why not from the last step's), so
 // a few Jacobi iterations hold a deep column as a stiff equation of state would: the compression
-// grows with the depth and with dt^2 and falls with the iterations, so the preset takes four steps
-// a frame of at least three iterations each, more where the mean compression is over its
-// tolerance (params.cpp). The mean of the steps' multipliers gives the pressure the frames show.
+// grows with the depth and with dt^2 and falls with the iterations, so the preset takes several
+// steps a frame of at least pbf_iterations iterations each, more where the mean compression is over
+// its tolerance (params.cpp). The mean of the steps' multipliers gives the pressure the frames show.
 // Fresh water is relaxed at rest first (settleInGate, relaxAtRest: incompressible_setup.h).
 #pragma once
 

@@ -1,7 +1,7 @@
 // Two particles on the same point: the spiky gradient of eq. (3.4) has no direction at r = 0, so
 // the pressure force between them vanishes and nothing ever separates them. Collisions make such
 // pairs: the box clamps every particle of a class that is driven into a corner to the same point,
-// and a thesis-preset dam break piled 69 LARGE particles there (density 23 rho0, for good).
+// and a thesis-preset dam break piled LARGE particles there at many times rest density, for good.
 // The force takes the gradient's limit instead, |grad W| -> 45 h^2 / (pi h^6), along a direction
 // hashed from the pair's ids and opposite for the two particles, so momentum is still conserved
 // and the result does not depend on the order or thread that evaluates it.
