@@ -12,6 +12,7 @@
 #include "net/frame_encoder.h"
 #include "net/peer_text.h"
 #include "scene/scene_loader.h"
+#include "sph/param_table.h"
 
 namespace app {
 namespace {
@@ -31,11 +32,17 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
   if (request.values().empty()) return "no parameters given";
   sph::AdaptiveConfig config = target.session.config();
   RunSettings settings = target.settings;
+  std::map<std::string, double> simulation;
   for (const auto& [name, value] : request.values()) {
     if (!std::isfinite(value)) return "parameter '" + net::echoText(name) + "' is not finite";
     bool adaptive = false;
     const std::string error = setAdaptiveParameter(config, name, value, adaptive);
-    if (adaptive) {
+    if (const sph::ParamSpec* spec = sph::findParameter(name); spec != nullptr && !adaptive) {
+      if (const std::string why = spec->check(value); !why.empty()) {
+        return std::string("parameter '") + spec->key + "' " + (spec->isFlag() ? "must be 0 or 1" : why);
+      }
+      simulation[name] = value;
+    } else if (adaptive) {
       if (!error.empty()) return error;
     } else if (name == "publish_hz") {
       if (std::string e = publishHzError(value); !e.empty()) return e;
@@ -45,15 +52,18 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
     } else if (name == "free_run") {
       if (!asBool(value, settings.free_run)) return name + " must be 0 or 1";
     } else {
-      return error;
+      return error + "; or a simulation parameter (sph_bench --parameter-table lists them)";
     }
   }
   try {
     config.validate();
+    // Simulation parameters restart the scene with them: last of the checks, first of the changes.
+    if (!simulation.empty()) target.session.setSimParameters(simulation);
   } catch (const std::exception& e) {
     return e.what();
   }
-  effects.restart_clock = settings.free_run != target.settings.free_run;
+  if (!simulation.empty()) spdlog::info("simulation parameters set: the scene restarted");
+  effects.restart_clock = !simulation.empty() || settings.free_run != target.settings.free_run;
   target.session.setConfig(config);
   target.settings = settings;
   return {};
@@ -100,6 +110,7 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
   params["publish_hz"] = target.settings.publish_hz;
   params["quantized"] = target.settings.quantized ? 1.0 : 0.0;
   params["free_run"] = target.settings.free_run ? 1.0 : 0.0;
+  for (const sph::ParamSpec& spec : sph::parameterTable()) params[spec.key] = spec.get(s.scene().params);
   if (target.fill_counters) target.fill_counters(status);
 }
 

@@ -19,6 +19,7 @@
 #include "process/omp_wait.h"
 #include "process/stop_signals.h"
 #include "scene/scene_loader.h"
+#include "sph/param_table.h"
 
 namespace {
 
@@ -27,6 +28,7 @@ struct CliOptions {
   std::string method;                  // empty: the scene's default method
   std::map<std::string, double> gaze;  // --gaze-* options given
   std::vector<std::string> adaptive;   // --adaptive name=value
+  std::vector<std::string> params;     // --param key=value
   std::string gaze_socket = "sub";
   std::string pose_socket = "sub";
   std::string log_level = "info";
@@ -110,6 +112,13 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--adaptive", o.adaptive,
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
                  "surface_includes_walls, gaze_*); repeatable");
+  cli.add_option("--param", o.params,
+                 "KEY=VALUE, a simulation parameter over the preset's and the scene file's (listed below); "
+                 "repeatable");
+  cli.footer(
+      "Simulation parameters (--param KEY=VALUE, set_parameters; defaults by preset: sph_bench "
+      "--parameter-table):\n" +
+      sph::parameterHelpText() + "\n" + cli.get_footer());
   cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
       ->check(cli::range(0, 86400))
       ->capture_default_str();
@@ -146,6 +155,12 @@ int main(int argc, char** argv) {
     std::string error;
     if (!app::parseAdaptiveSetting(setting, o.server.sim.adaptive_overrides, error)) {
       return cli::usageError(cli, "--adaptive " + setting + ": " + error);
+    }
+  }
+  for (const std::string& setting : o.params) {
+    std::string error;
+    if (!sph::parseParameterSetting(setting, o.server.sim.sim_parameters, error)) {
+      return cli::usageError(cli, "--param " + setting + ": " + error);
     }
   }
   net::inputSocketTypeByName(o.gaze_socket, o.server.net.gaze_type);

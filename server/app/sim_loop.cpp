@@ -40,6 +40,7 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
       refusal_log_(options.log_interval) {
   encoder_.setNeighborCounts(options.neighbor_counts);
   session_.usePreset(options.preset);
+  session_.useSimParameters(options.sim_parameters);
   session_.load(options.scene, options.method, /*allow_paths=*/true);
   if (!options.load_state.empty()) {
     const sph::CheckpointInfo info =

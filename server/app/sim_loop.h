@@ -36,6 +36,8 @@ struct SimLoopOptions {
   std::string save_state;
   // Adaptive settings by name (adaptive_parameters.h) over each scene's own "adaptive" block.
   std::map<std::string, double> adaptive_overrides;
+  // Simulation parameters by key over every loaded scene's (--param; SimSession::useSimParameters).
+  std::map<std::string, double> sim_parameters;
   RunSettings settings;
   bool velocities = false;
   bool neighbor_counts = false;  // per-particle neighbour counts in frames (viewer's spray)

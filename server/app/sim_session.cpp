@@ -6,6 +6,7 @@
 #include "app/adaptive_parameters.h"
 #include "net/peer_text.h"
 #include "scene/scene_loader.h"
+#include "sph/param_table.h"
 
 namespace app {
 namespace {
@@ -25,6 +26,21 @@ class FedAdaptiveStep : public sph::AdaptiveStep {
   BeforeAdaptiveStep before_;
 };
 
+// `values` by key into `into` and onto `params`; throws std::invalid_argument for an unknown key or
+// a value out of its parameter's range.
+void addSimParameters(const std::map<std::string, double>& values, std::map<std::string, double>& into,
+                      sph::SimParams& params) {
+  for (const auto& [name, value] : values) {
+    const sph::ParamSpec* spec = sph::findParameter(name);
+    if (spec == nullptr) throw std::invalid_argument("unknown simulation parameter '" + net::echoText(name) + "'");
+    if (const std::string why = spec->check(value); !why.empty()) {
+      throw std::invalid_argument(std::string("parameter '") + spec->key + "' " + why);
+    }
+    into[spec->key] = value;
+    spec->set(params, value);
+  }
+}
+
 }  // namespace
 
 SimSession::SimSession(std::string scene_dir, std::map<std::string, double> overrides, BeforeAdaptiveStep before)
@@ -36,7 +52,9 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
   if (!allow_paths && std::find(names.begin(), names.end(), scene_name) == names.end()) {
     throw scene::SceneError("no scene '" + net::echoText(scene_name) + "' in " + scene_dir_);
   }
-  const sph::Scene scene = scene::loadScene(scene_name, scene_dir_, preset_override_);
+  sph::Scene scene = scene::loadScene(scene_name, scene_dir_, preset_override_);
+  std::map<std::string, double> unused;
+  addSimParameters(sim_parameters_, unused, scene.params);
   sph::Method chosen = sph::Method::Regular;
   if (method) {
     chosen = *method;
@@ -68,6 +86,21 @@ bool SimSession::setPreset(const std::string& preset) {
     throw;
   }
   return true;
+}
+
+void SimSession::useSimParameters(const std::map<std::string, double>& values) {
+  std::map<std::string, double> merged = sim_parameters_;
+  sph::SimParams unused;
+  addSimParameters(values, merged, unused);
+  sim_parameters_ = std::move(merged);
+}
+
+void SimSession::setSimParameters(const std::map<std::string, double>& values) {
+  std::map<std::string, double> merged = sim_parameters_;
+  sph::Scene scene = scene_;
+  addSimParameters(values, merged, scene.params);
+  start(scene, method_, config_);  // validates the parameters together; a throw changes nothing
+  sim_parameters_ = std::move(merged);
 }
 
 void SimSession::reset() { start(scene_, method_, config_); }

@@ -42,6 +42,16 @@ class SimSession {
   void load(const std::string& scene, std::optional<sph::Method> method, bool allow_paths = false);
   // Restarts the current scene from its initial state, same method and settings.
   void reset();
+  // Simulation parameters by key (sph/param_table.h) that replace the preset's and the scene
+  // file's whenever a scene loads (the command line's --param). Each value must pass its
+  // parameter's check; throws std::invalid_argument naming the first that does not.
+  void useSimParameters(const std::map<std::string, double>& values);
+  // Adds `values` to those and restarts the current scene with them (same method and settings).
+  // Throws std::invalid_argument when one is out of range or they do not fit the scene's other
+  // parameters (SimParams::validate), and then changes nothing.
+  void setSimParameters(const std::map<std::string, double>& values);
+  const std::map<std::string, double>& simParameters() const { return sim_parameters_; }
+
   // Between adaptive methods the controller switches in place and the particles stay; to or from
   // regular the particle set changes class wholesale, so the scene restarts. True when it restarted.
   bool setMethod(sph::Method method);
@@ -74,6 +84,7 @@ class SimSession {
   std::string scene_name_;       // what load() was given, so that setPreset can read the file again
   bool scene_allow_paths_ = false;
   std::map<std::string, double> overrides_;
+  std::map<std::string, double> sim_parameters_;  // by the parameter's key, never an alias
   sph::AdaptiveConfig config_;
   BeforeAdaptiveStep before_;
   sph::Scene scene_;

@@ -14,6 +14,7 @@
 #include "cli/cli_conventions.h"
 #include "process/omp_wait.h"
 #include "scene/scene_loader.h"
+#include "sph/param_table.h"
 
 namespace {
 
@@ -63,7 +64,16 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
                  "vtu (binary, with a particles.pvd time index for ParaView), vtk (legacy ASCII) or csv")
       ->check(CLI::IsMember({"vtu", "vtk", "csv"}))
       ->capture_default_str();
+  bool parameter_table = false;
+  app.add_flag("--parameter-table", parameter_table,
+               "print every simulation parameter with its default in each preset (Markdown) and exit");
+  app.footer("Simulation parameters (a scene file's \"params\"; sph_server --param):\n" + sph::parameterHelpText() +
+             "\n" + app.get_footer());
   if (auto code = cli::parse(app, argc, argv)) return code;
+  if (parameter_table) {
+    std::fputs(sph::parameterTableMarkdown().c_str(), stdout);
+    return 0;
+  }
   if (const std::string twice = bench::firstRepeated(request.presets); !twice.empty()) {
     return cli::usageError(app, "--preset: " + twice + " named twice");
   }

@@ -11,6 +11,10 @@
 #include <set>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
+#include "sph/param_table.h"
+
 namespace scene {
 
 namespace {
@@ -85,59 +89,28 @@ struct Context {
   }
 };
 
+// Every key of "params" by the parameter table (sph/param_table.h): its type, then its range.
 void readParams(const Context& ctx, const json& params, sph::SimParams& p) {
-  // One entry per overridable parameter: name -> (field, rule).
-  using Setter = std::function<void(const json&, const std::string&)>;
-  const std::map<std::string, Setter> setters = {
-      {"rest_density", [&](const json& v, const std::string& k) { p.rest_density = ctx.positive(v, k); }},
-      {"viscosity", [&](const json& v, const std::string& k) { p.viscosity = ctx.nonNegative(v, k); }},
-      {"surface_tension", [&](const json& v, const std::string& k) { p.surface_tension = ctx.nonNegative(v, k); }},
-      {"gas_stiffness", [&](const json& v, const std::string& k) { p.gas_stiffness = ctx.positive(v, k); }},
-      {"time_step", [&](const json& v, const std::string& k) { p.time_step = ctx.positive(v, k); }},
-      {"gravity", [&](const json& v, const std::string& k) { p.gravity = ctx.number(v, k); }},
-      {"mass_small", [&](const json& v, const std::string& k) { p.mass_small = ctx.positive(v, k); }},
-      {"mass_large", [&](const json& v, const std::string& k) { p.mass_large = ctx.positive(v, k); }},
-      {"kernel_particles_small",
-       [&](const json& v, const std::string& k) { p.kernel_particles_small = ctx.positive(v, k); }},
-      {"kernel_particles_large",
-       [&](const json& v, const std::string& k) { p.kernel_particles_large = ctx.positive(v, k); }},
-      {"surface_tension_enabled",
-       [&](const json& v, const std::string& k) {
-         if (!v.is_boolean()) ctx.fail(k, "must be true or false");
-         p.surface_tension_enabled = v.get<bool>();
-       }},
-      {"resort_interval", [&](const json& v, const std::string& k) { p.resort_interval = ctx.positiveInt(v, k); }},
-      {"substeps", [&](const json& v, const std::string& k) { p.substeps = ctx.positiveInt(v, k); }},
-      {"pbf_iterations", [&](const json& v, const std::string& k) { p.pbf_iterations = ctx.positiveInt(v, k); }},
-      {"pbf_density_tolerance",
-       [&](const json& v, const std::string& k) { p.pbf_density_tolerance = ctx.nonNegative(v, k); }},
-      {"pbf_max_iterations",
-       [&](const json& v, const std::string& k) { p.pbf_max_iterations = ctx.positiveInt(v, k); }},
-      {"pbf_relaxation", [&](const json& v, const std::string& k) { p.pbf_relaxation = ctx.positive(v, k); }},
-      {"pbf_omega", [&](const json& v, const std::string& k) { p.pbf_omega = ctx.positive(v, k); }},
-      {"pbf_tensile_k", [&](const json& v, const std::string& k) { p.pbf_tensile_k = ctx.nonNegative(v, k); }},
-      {"pbf_tensile_dq", [&](const json& v, const std::string& k) { p.pbf_tensile_dq = ctx.positive(v, k); }},
-      {"pbf_tensile_n", [&](const json& v, const std::string& k) { p.pbf_tensile_n = ctx.positiveInt(v, k); }},
-      {"xsph_viscosity", [&](const json& v, const std::string& k) { p.xsph_viscosity = ctx.nonNegative(v, k); }},
-      {"vorticity_confinement",
-       [&](const json& v, const std::string& k) { p.vorticity_confinement = ctx.nonNegative(v, k); }},
-      {"cfl", [&](const json& v, const std::string& k) { p.cfl = ctx.positive(v, k); }},
-      {"max_substeps", [&](const json& v, const std::string& k) { p.max_substeps = ctx.positiveInt(v, k); }},
-      {"density_tolerance", [&](const json& v, const std::string& k) { p.density_tolerance = ctx.positive(v, k); }},
-      {"divergence_tolerance",
-       [&](const json& v, const std::string& k) { p.divergence_tolerance = ctx.positive(v, k); }},
-      {"max_iterations", [&](const json& v, const std::string& k) { p.max_iterations = ctx.positiveInt(v, k); }},
-      {"conjugate_gradients",
-       [&](const json& v, const std::string& k) {
-         if (!v.is_boolean()) ctx.fail(k, "must be true or false");
-         p.conjugate_gradients = v.get<bool>();
-       }},
-  };
   if (!params.is_object()) ctx.fail("params", "must be an object");
   for (const auto& [name, value] : params.items()) {
-    const auto it = setters.find(name);
-    if (it == setters.end()) ctx.fail("params." + name, "unknown parameter");
-    it->second(value, "params." + name);
+    const std::string key = "params." + name;
+    const sph::ParamSpec* spec = sph::findParameter(name);
+    if (spec == nullptr) ctx.fail(key, "unknown parameter");
+    if (name != spec->key) {
+      spdlog::warn("{}: key '{}' is now called 'params.{}' (the old name still works)", ctx.source, key, spec->key);
+    }
+    double number = 0.0;
+    if (spec->isFlag()) {
+      if (!value.is_boolean()) ctx.fail(key, "must be true or false");
+      number = value.get<bool>() ? 1.0 : 0.0;
+    } else if (spec->isInteger()) {
+      if (!value.is_number_integer()) ctx.fail(key, "must be " + spec->accepts());
+      number = static_cast<double>(value.get<long long>());
+    } else {
+      number = ctx.number(value, key);
+    }
+    if (const std::string why = spec->check(number); !why.empty()) ctx.fail(key, why);
+    spec->set(p, number);
   }
 }
 

@@ -12,8 +12,10 @@ if [ "${1:-}" = "--checks" ]; then  # the part that runs with the trees hidden
   out=$(mktemp -d)
   [ "$("$bin/sph_server" --version)" = "sph_server $version" ] || { echo "FAIL: sph_server --version"; exit 1; }
   # The default --scene-dir shown by --help: the scenes installed beside the program.
-  "$bin/sph_server" --help | grep -q -- "--scene-dir TEXT=$prefix/share/gaze-adaptive-sph/scenes" ||
-    { echo "FAIL: the default scene folder is not the installed one:"; "$bin/sph_server" --help | grep -- --scene-dir; exit 1; }
+  # (Read whole first: grep -q stops reading at its match, and a pipe closed early fails the run.)
+  help=$("$bin/sph_server" --help)
+  grep -q -- "--scene-dir TEXT=$prefix/share/gaze-adaptive-sph/scenes" <<<"$help" ||
+    { echo "FAIL: the default scene folder is not the installed one:"; grep -- --scene-dir <<<"$help"; exit 1; }
   "$bin/sph_bench" --scene small_box --frames 5 --out "$out/bench" >"$out/report.txt" 2>"$out/log.txt" ||
     { echo "FAIL: sph_bench from the installed tree"; cat "$out/log.txt"; exit 1; }
   [ "$(wc -l <"$out/bench/frames.csv")" -eq 6 ] || { echo "FAIL: frames.csv is not a header and 5 rows"; exit 1; }

@@ -205,6 +205,27 @@ TEST(ServerControl, SetParametersAllOrNothing) {
   }));
 }
 
+// Simulation parameters (sph/param_table.h) restart the scene with them, all or nothing.
+TEST(ServerControl, SetParametersTakesSimulationParametersAndRestarts) {
+  ControlRun run;
+  ControlReply r = run.request(run.setParameters({{"pbf_iterations", 3.0}, {"xsph_viscosity", 0.02}}));
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_DOUBLE_EQ(r.status().parameters().at("pbf_iterations"), 3.0);
+  EXPECT_DOUBLE_EQ(r.status().parameters().at("xsph_viscosity"), 0.02);
+  for (const Control& bad : {run.setParameters({{"pbf_iterations", 2.5}}), run.setParameters({{"pbf_omega", 2.0}}),
+                             run.setParameters({{"xsph_viscosity", 0.05}, {"mass_large", 1.0}})}) {
+    r = run.request(bad);
+    EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_BAD_PARAMETER);
+    EXPECT_DOUBLE_EQ(r.status().parameters().at("xsph_viscosity"), 0.02) << "nothing applied";
+    EXPECT_DOUBLE_EQ(r.status().parameters().at("pbf_iterations"), 3.0);
+  }
+  // The old name of a renamed key still sets it.
+  r = run.request(run.setParameters({{"cfl", 0.3}}));
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_DOUBLE_EQ(r.status().parameters().at("dfsph_cfl"), 0.3);
+}
+
 TEST(ServerControl, MalformedRequestsGetBadRequest) {
   ControlRun run;
   auto r = run.client.sendRaw("\x08\x01 this is not a Control message \xff\xff");

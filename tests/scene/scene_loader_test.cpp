@@ -107,16 +107,26 @@ TEST(SceneLoader, PbfRelaxationFactorIsReadAndChecked) {
   EXPECT_DOUBLE_EQ(scene::parseScene(withKey(R"("preset": "pbf", "params": {"pbf_omega": 0.5})"), "t").params.pbf_omega,
                    0.5);
   EXPECT_NE(errorOf(withKey(R"("params": {"pbf_omega": 0})")).find("params.pbf_omega"), std::string::npos);
-  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_omega": 1.5})")).find("'pbf_omega' must be in (0, 1]"),
+  EXPECT_NE(errorOf(withKey(R"("params": {"pbf_omega": 1.5})")).find("params.pbf_omega': must be a number in (0, 1]"),
             std::string::npos);
 }
 
 TEST(SceneLoader, DfsphSolveChoiceIsReadAndChecked) {
-  EXPECT_TRUE(scene::parseScene(withKey(R"("preset": "dfsph")"), "t").params.conjugate_gradients);
-  EXPECT_FALSE(scene::parseScene(withKey(R"("preset": "dfsph", "params": {"conjugate_gradients": false})"), "t")
-                   .params.conjugate_gradients);
-  EXPECT_NE(errorOf(withKey(R"("params": {"conjugate_gradients": "no"})")).find("params.conjugate_gradients"),
-            std::string::npos);
+  EXPECT_TRUE(scene::parseScene(withKey(R"("preset": "dfsph")"), "t").params.dfsph_conjugate_gradients);
+  EXPECT_FALSE(scene::parseScene(withKey(R"("preset": "dfsph", "params": {"dfsph_conjugate_gradients": false})"), "t")
+                   .params.dfsph_conjugate_gradients);
+  EXPECT_NE(
+      errorOf(withKey(R"("params": {"dfsph_conjugate_gradients": "no"})")).find("params.dfsph_conjugate_gradients"),
+      std::string::npos);
+}
+
+// A renamed key keeps loading under its old name (sph/param_table.h, ParamSpec::alias).
+TEST(SceneLoader, RenamedParameterKeysStillLoadUnderTheirOldNames) {
+  const sph::Scene s =
+      scene::parseScene(withKey(R"("preset": "dfsph", "params": {"cfl": 0.3, "max_iterations": 50})"), "t");
+  EXPECT_DOUBLE_EQ(s.params.dfsph_cfl, 0.3);
+  EXPECT_EQ(s.params.dfsph_max_iterations, 50);
+  EXPECT_NE(errorOf(withKey(R"("params": {"max_iterations": 2.5})")).find("params.max_iterations"), std::string::npos);
 }
 
 TEST(SceneLoader, CallersPresetReplacesTheScenesAndParamsStillApply) {

@@ -231,8 +231,8 @@ TEST(Hydrostatic, DfsphConjugateGradientsReachTheToleranceInFewerIterations) {
   for (int run = 0; run < 3; ++run) {
     omp_set_num_threads(run == 2 ? 2 : 1);
     sph::Scene scene = tank("dfsph", 8, 24);
-    EXPECT_TRUE(scene.params.conjugate_gradients);  // the preset's
-    scene.params.conjugate_gradients = run != 1;
+    EXPECT_TRUE(scene.params.dfsph_conjugate_gradients);  // the preset's
+    scene.params.dfsph_conjugate_gradients = run != 1;
     sph::Simulation sim(scene, sph::SizeClass::Small);
     ASSERT_EQ(sim.particles().size(), 1536u);
     for (int f = 0; f < 100; ++f) sim.step();

@@ -16,18 +16,6 @@ void requireAdaptive(Method method) {
   }
 }
 
-void requireTwoToOneMasses(const SimParams& params) {
-  // Split and merge trade one LARGE for two SMALL: exact mass conservation needs m_L = 2 m_S in
-  // the float the particles store.
-  const float small = static_cast<float>(params.mass_small);
-  const float large = static_cast<float>(params.mass_large);
-  if (large != 2.0f * small) {
-    throw std::invalid_argument(
-        "adaptive methods need mass_large = 2 * mass_small (split and merge trade one LARGE for "
-        "two SMALL)");
-  }
-}
-
 }  // namespace
 
 AdaptiveController::AdaptiveController(Method method, const AdaptiveConfig& config, const ScreenCamera& camera)
@@ -59,7 +47,6 @@ GazeMode AdaptiveController::gazeMode() const {
 }
 
 void AdaptiveController::apply(Simulation& sim) {
-  requireTwoToOneMasses(sim.params());
   const ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   decision_.resize(n);

@@ -11,10 +11,10 @@ namespace sph {
 
 namespace {
 
-// The proximal weight, and the iterations on one anchor (below). A tank 14 layers deep (1,400
-// particles) after 9 s: 0.05 and 8 keep it at 2.5 mm/s rms (without the proximal term 8 mm/s;
-// Jacobi alone 0.2); 0.2 at 0.9 mm/s, but with twice the iterations, and one anchor a step with
-// 0.15 kept them from reaching the tolerance (docs/performance.md).
+// The proximal weight, and the iterations on one anchor (below). Without the proximal term a
+// resting tank keeps moving; a heavier weight calms it further but at many more iterations, and
+// one anchor a step kept them from reaching the tolerance (docs/performance.md, "Design
+// measurements behind the code").
 constexpr float kProximal = 0.05f;
 constexpr int kAnchorIterations = 8;
 
@@ -36,7 +36,7 @@ int DfsphSolver::conjugateGradients(const FrameContext& frame, const DfsphPassFo
   // (Saad 2003, algorithm 9.1), preconditioned with B's diagonal (scale / inverse_diagonal).
   // residual_ = b - B k over every particle (> 0: still compressed); change_ holds D(a(k)) on
   // entry. They solve B k + mu diag(B) (k - k_entry) = b, which keeps k near where the Jacobi
-  // iterations left it, as Jacobi itself does; without it a tank kept moving at 8 mm/s, and a
+  // iterations left it, as Jacobi itself does; without it a resting tank kept moving, and a
   // penalty on k's roughness alone (sum_j |m_j grad W_ij| (k_i - k_j)) did not calm it, so it is
   // the step-to-step change of the smooth k that stirs. The stop is on B's own residual.
   const auto diagonal = [&](std::size_t i) { return scale / inverse_diagonal_[i]; };
@@ -63,7 +63,7 @@ int DfsphSolver::conjugateGradients(const FrameContext& frame, const DfsphPassFo
   double rz = orderedSum(n, sum_partials_, [&](std::size_t i) { return weighted(preconditioned_, i); });
   int since_anchor = 0;
   arrays_.stiffness = search_.data();
-  while (iteration < frame.scene.params.max_iterations && rz > 0.0) {
+  while (iteration < frame.scene.params.dfsph_max_iterations && rz > 0.0) {
     pressureAccelerations(forms, frame.grid, true);
     forms.change(arrays_, constants_, frame.grid);  // B search = -scale change_
     // Each iteration's O(n) work in as few sweeps as the sums allow (ordered_sum.h).
@@ -84,7 +84,7 @@ int DfsphSolver::conjugateGradients(const FrameContext& frame, const DfsphPassFo
     if (++since_anchor == kAnchorIterations) {
       // The proximal point method's next step (Rockafellar 1976): anchored at the k reached, so
       // that the solves converge to B k = b where it wants k far from the Jacobi iterations' (a
-      // single anchor left small_box's column short of the tolerance for 100 iterations).
+      // single anchor left small_box's column short of the tolerance until the iteration limit).
       since_anchor = 0;
       rz = orderedSum(n, sum_partials_, [&](std::size_t i) {
         anchor_[i] = stiffness_[i];

@@ -36,11 +36,10 @@ constexpr int kJacobiIterations = 3;
 
 // Fresh placements are moved apart (local_placement.h) until none sits more than this share of
 // rest density above its parent's density (or rho0), in at most this many iterations. The solver
-// turns what compression is left into speed within one step: splitting every particle of a pool
-// moving at 0.15 m/s rms kicked it to 3.5 m/s without the placement, 0.31 m/s with a 1 % limit,
-// 0.18 m/s with this one. Splitting a whole resting pool takes about 220 iterations to reach it
-// (the wall layers' children crowd their layer); stopped at 100, half the children were still
-// over it and the step lifted the pool at 0.21 m/s, reached, 0.07 m/s
+// turns what compression is left into speed within one step: splitting every particle of a moving
+// pool threw it without the placement, and a looser limit still kicked it. Splitting a whole
+// resting pool takes most of these iterations to reach the limit (the wall layers' children crowd
+// their layer); stopped short of it, many children were still over it and the step lifted the pool
 // (SplitMerge.SplittingOrMergingARestingDfsphPoolDoesNotThrowIt). The dam break's splits take fewer.
 constexpr float kPlacedCompression = 0.003f;
 constexpr int kPlacedIterations = 300;
@@ -56,9 +55,9 @@ DfsphSolver::DfsphSolver(const Scene& scene)
 }
 
 // Only the warm start: the quasi-static relaxation pbf settles with (relaxAtRest) does not
-// converge for this solver (measured, docs/fluids.md: in the Martin & Moyce gate it left the column
-// 10 % taller than it was sampled, in a closed 48-layer tank it gave NaN); the lattice is released
-// as sampled, with the pressure of water at rest.
+// converge for this solver (in the Martin & Moyce gate it left the column taller than it was
+// sampled, in a closed deep tank it gave NaN; docs/fluids.md, "Water starts at rest"); the lattice
+// is released as sampled, with the pressure of water at rest.
 void DfsphSolver::settle(const FrameContext& frame) {
   const std::vector<float> pressure = restingPressure(frame.scene, setup_, frame.particles);
   const auto rho0 = static_cast<float>(frame.scene.params.rest_density);
@@ -76,15 +75,15 @@ void DfsphSolver::advance(const FrameContext& frame) {
   while (done < frame.dt * (1.0 - 1e-9)) {
     // CFL: no particle moves more than cfl spacings in a step (BK17 eq. 15 with the diameter),
     // and at least `substeps` steps a frame (SPlisHSPlasH's 5 ms ceiling: a tank at rest in 10 ms
-    // steps did not come to rest, docs/fluids.md).
+    // steps did not come to rest; docs/fluids.md, "dfsph: divergence-free SPH").
     float fastest = 0.0f;
     const std::size_t n = p.size();
 #pragma omp parallel for schedule(static) reduction(max : fastest)
     for (std::size_t i = 0; i < n; ++i) fastest = std::max(fastest, p.velocity[i].norm());
     const double remaining = frame.dt - done;
     const double longest = frame.dt / params.substeps;
-    const double bound = fastest > 0.0f ? std::min(params.cfl * spacing / fastest, longest) : longest;
-    const int left = std::max(params.max_substeps - frame.stats.substeps, 1);
+    const double bound = fastest > 0.0f ? std::min(params.dfsph_cfl * spacing / fastest, longest) : longest;
+    const int left = std::max(params.dfsph_max_substeps - frame.stats.substeps, 1);
     const int steps = std::clamp(static_cast<int>(std::ceil(remaining / bound - 1e-9)), 1, left);
     const double dt = remaining / steps;
     ++frame.stats.substeps;  // counted before it runs: the last step's XSPH reads the frame's count
@@ -138,21 +137,22 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
   // dt D(a)); Jacobi on A k = target, A's diagonal -dt^2 / inverse_diagonal (dfsph_passes.h).
   const float scale = density_target ? dt * dt : dt;
   const float tolerance =
-      static_cast<float>(density_target ? params.density_tolerance : params.divergence_tolerance / dt) * rho0;
+      static_cast<float>(density_target ? params.dfsph_density_tolerance : params.dfsph_divergence_tolerance / dt) *
+      rho0;
   arrays_.field = acceleration_.data()->data();
   arrays_.with_wall_rate = false;
   const int least = density_target ? 2 : 1;  // BK17 runs at least two density iterations, one divergence iteration
   const double count = static_cast<double>(std::max<std::size_t>(n, 1));
   int iteration = 0;
   bool accelerated = false;  // whether the iterations turned to conjugate gradients yet
-  while (iteration < params.max_iterations) {
+  while (iteration < params.dfsph_max_iterations) {
     pressureAccelerations(forms, frame.grid, density_target);
     forms.change(arrays_, constants_, frame.grid);
-    if (density_target && params.conjugate_gradients && !accelerated && iteration == kJacobiIterations) {
-      // Jacobi removes a step's new, local error in a few iterations, but the smooth rest only at
-      // a percent or two an iteration (dam break: about 3 iterations to 0.13 %, 16 more to the
-      // 0.05 % tolerance); conjugate gradients take it from here, and the Jacobi iterations
-      // resume on what they leave (the k < 0 they drop, a rougher residual).
+    if (density_target && params.dfsph_conjugate_gradients && !accelerated && iteration == kJacobiIterations) {
+      // Jacobi removes a step's new, local error in a few iterations, but the smooth rest only
+      // slowly (on the dam break most of a solve's iterations went to it); conjugate gradients
+      // take it from here, and the Jacobi iterations resume on what they leave (the k < 0 they
+      // drop, a rougher residual).
       iteration = conjugateGradients(frame, forms, scale, tolerance, least, iteration);
       accelerated = true;
       continue;
@@ -167,7 +167,7 @@ int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool
     ++iteration;
     // BK17's order: the iteration that finds the error within still updates (after conjugate
     // gradients that update smooths what they leave: stopping before it, the next step's
-    // divergence solve took 1.5x the iterations, dam break).
+    // divergence solve took more iterations on the dam break).
     if (error / count <= tolerance && iteration >= least) break;
   }
   pressureAccelerations(forms, frame.grid, density_target);
@@ -217,7 +217,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   // Densities, then the divergence solver on the new neighbourhoods (BK17 algorithm 1).
   timer.start(frame.timings.density_pressure_ms);
   passForms().density(a, constants_, frame.grid);
-  if (frame.scene.params.divergence_tolerance > 0.0) {
+  if (frame.scene.params.dfsph_divergence_tolerance > 0.0) {
     frame.stats.divergence_iterations += solve(frame, p.kappa_divergence, false, dt);
   }
   timer.stop();

@@ -5,7 +5,7 @@
 // moves the particles. Both solvers iterate for k = p / rho^2 >= 0 (water pushes, never pulls)
 // to a tolerance, warm-started from the last step's k (attributes, so it follows its particle
 // through reorders, splits and merges): relaxed Jacobi iterations, and for the constant density,
-// past the first three, conjugate gradients (SimParams::conjugate_gradients). Solver steps obey a
+// past the first three, conjugate gradients (SimParams::dfsph_conjugate_gradients). Solver steps obey a
 // CFL bound, and a frame takes at least SimParams::substeps of them.
 #pragma once
 
