@@ -35,5 +35,7 @@ GridBinningForms gridBinningForms();
 namespace avx512 {
 GridBinningForms gridBinningForms();
 }  // namespace avx512
+// The forms this CPU runs (simd_level.h).
+GridBinningForms gridBinningForms();
 
 }  // namespace sph

@@ -47,10 +47,6 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   neighbor_index_.resize(particle_capacity * stride_ + 16);
 }
 
-namespace scalar {
-#include "sph/grid_binning.inc"
-}  // namespace scalar
-
 void NeighborGrid::bin(const ParticleSet& particles) {
   const std::size_t n = particles.size();
   const std::size_t cells = cellCount();
@@ -64,8 +60,7 @@ void NeighborGrid::bin(const ParticleSet& particles) {
   const auto threads = static_cast<std::size_t>(omp_get_max_threads());
   if (thread_cursor_.size() < threads * cells) thread_cursor_.resize(threads * cells);
   cell_range_total_.resize(threads);
-  const GridBinningForms forms =
-      simdLevel() == SimdLevel::kAvx512 ? avx512::gridBinningForms() : scalar::gridBinningForms();
+  const GridBinningForms forms = gridBinningForms();
   const GridGeometry geometry{{origin_.x(), origin_.y(), origin_.z()}, inv_cell_size_, {dims_[0], dims_[1], dims_[2]}};
 
   // A counting sort shared by the threads, in one parallel region. Done serially between two
@@ -125,7 +120,7 @@ void NeighborGrid::build(const ParticleSet& particles) {
   bin(particles);
   findSupportRuns();
   const std::size_t n = particles.size();
-  const auto build_block = simdLevel() == SimdLevel::kAvx512 ? avx512::buildBlockLists : scalar::buildBlockLists;
+  const auto build_block = neighborScanForms().buildBlockLists;
   const SortedCandidates sorted{sorted_x_.data(), sorted_y_.data(), sorted_z_.data(), sorted_support_.data(),
                                 cell_particles_.data()};
   for (;;) {

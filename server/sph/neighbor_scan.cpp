@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "sph/simd/simd_level.h"
+
 namespace sph::scalar {
 
 namespace {
@@ -42,4 +44,10 @@ void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, S
 
 #include "sph/neighbor_block.inc"
 
+NeighborScanForms neighborScanForms() { return {buildBlockLists}; }
+
 }  // namespace sph::scalar
+
+sph::NeighborScanForms sph::neighborScanForms() {
+  return formsForThisCpu(scalar::neighborScanForms, avx512::neighborScanForms);
+}

@@ -86,4 +86,17 @@ namespace avx512 {
 std::uint32_t buildBlockLists(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
 }  // namespace avx512
 
+// The neighbour scan's passes as one form (simd_level.h).
+struct NeighborScanForms {
+  std::uint32_t (*buildBlockLists)(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
+};
+namespace scalar {
+NeighborScanForms neighborScanForms();
+}  // namespace scalar
+namespace avx512 {
+NeighborScanForms neighborScanForms();
+}  // namespace avx512
+// The forms this CPU runs.
+NeighborScanForms neighborScanForms();
+
 }  // namespace sph

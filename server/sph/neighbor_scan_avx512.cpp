@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <utility>
 
-#include "sph/grid_binning.h"
 #include "sph/neighbor_scan.h"
 #include "sph/simd/avx512_lanes.h"
 #include "sph/simd/avx512_target.h"
@@ -107,14 +106,14 @@ template <std::size_t kTargets>
 
 }  // namespace
 
-#include "sph/grid_binning.inc"
-
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity) {
   scanGroup(rows, sorted, targets, target_count, capacity);
 }
 
 #include "sph/neighbor_block.inc"
+
+NeighborScanForms neighborScanForms() { return {buildBlockLists}; }
 
 }  // namespace sph::avx512
 

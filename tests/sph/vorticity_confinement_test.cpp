@@ -73,7 +73,7 @@ TEST(VorticityConfinement, PushTurnsWithTheVortexAndScalesWithEpsilon) {
   c.xsph = 0.0f;  // velocity_next = velocity before the confinement: the push alone remains
   std::vector<sph::Vec3> next(p.size()), vorticity(p.size());
   const sph::VelocityArrays a = sph::velocityArraysOf(p, next, vorticity, true, true, false);
-  const sph::VelocityPassForms forms = sph::dispatchedVelocityPassForms();
+  const sph::VelocityPassForms forms = sph::velocityPassForms();
 
   const auto pushes = [&](float epsilon) {
     c.vorticity_epsilon = epsilon;

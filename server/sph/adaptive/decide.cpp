@@ -10,18 +10,6 @@
 
 namespace sph {
 
-namespace scalar {
-#include "sph/adaptive/decision_passes.inc"
-}  // namespace scalar
-
-namespace {
-
-DecisionPassForms passForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::decisionPassForms() : scalar::decisionPassForms();
-}
-
-}  // namespace
-
 DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, std::span<std::int8_t> out) {
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
@@ -33,7 +21,7 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
                              p.normal_length.data(),    p.pressure.data(),
                              p.size_class.data(),       sim.grid().neighborCounts().data(),
                              p.surface_distance.data(), out.data()};
-  const DecisionPassForms forms = passForms();
+  const DecisionPassForms forms = decisionPassForms();
 
   // Character field, eq. (3.45), and the decision, eq. (3.46). N_max is taken per size class: the
   // classes have different neighbour counts by design (x_SMALL 50, x_LARGE 20, table 3.2), and one
@@ -89,7 +77,7 @@ DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& ca
   const float* xyz = particles.position.data()->data();  // packed x, y, z
   const float* radius = particles.radius.data();
   const std::size_t n = particles.size();
-  const DecisionPassForms forms = passForms();
+  const DecisionPassForms forms = decisionPassForms();
   int split_wanted = 0;
   int merge_wanted = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted)

@@ -82,5 +82,7 @@ DecisionPassForms decisionPassForms();
 namespace avx512 {
 DecisionPassForms decisionPassForms();
 }  // namespace avx512
+// The forms this CPU runs (simd_level.h).
+DecisionPassForms decisionPassForms();
 
 }  // namespace sph

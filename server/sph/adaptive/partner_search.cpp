@@ -65,8 +65,14 @@ void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p,
 
 void choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, PartnerScratch& scratch) {
-  dispatch(scalar::choosePartners, avx512::choosePartners, p, grid, decision, partner, scratch);
+  partnerSearchForms().choosePartners(p, grid, decision, partner, scratch);
 }
+
+PartnerSearchForms partnerSearchForms() {
+  return formsForThisCpu(scalar::partnerSearchForms, avx512::partnerSearchForms);
+}
+
+PartnerSearchForms scalar::partnerSearchForms() { return {scalar::choosePartners}; }
 
 void scalar::choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
                             std::span<std::int32_t> partner, PartnerScratch& scratch) {

@@ -33,6 +33,20 @@ void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std:
                     std::span<std::int32_t> partner, PartnerScratch& scratch);
 }  // namespace avx512
 
+// The partner search as one form (simd_level.h).
+struct PartnerSearchForms {
+  void (*choosePartners)(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
+                         std::span<std::int32_t> partner, PartnerScratch& scratch);
+};
+namespace scalar {
+PartnerSearchForms partnerSearchForms();
+}  // namespace scalar
+namespace avx512 {
+PartnerSearchForms partnerSearchForms();
+}  // namespace avx512
+// The forms this CPU runs.
+PartnerSearchForms partnerSearchForms();
+
 namespace detail {
 // The nearest merging neighbour of particle i in `list` (packed x, y, z positions), or -1.
 using NearestMergingNeighbourFn = std::int32_t (*)(const float* positions, const std::uint32_t* ids,

@@ -66,6 +66,8 @@ void avx512::choosePartners(const ParticleSet& p, const NeighborGrid& grid, std:
   detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, scratch);
 }
 
+PartnerSearchForms avx512::partnerSearchForms() { return {avx512::choosePartners}; }
+
 }  // namespace sph
 
 SPH_AVX512_END

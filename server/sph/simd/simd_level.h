@@ -1,11 +1,19 @@
 // Which instruction set the library's vector loops run, chosen once at run time from the CPU.
 //
-// The pattern, the same for every loop that has a vector form: the scalar form lives in
-// namespace sph::scalar in `foo.cpp`, the AVX-512 form in namespace sph::avx512 in
-// `foo_avx512.cpp` (its code between SPH_AVX512_BEGIN and SPH_AVX512_END, avx512_target.h), both
-// declared in `foo.h`, and the public sph::foo() calls the one simdLevel() names. The whole
-// library is built for baseline x86-64, so one build runs on any x86-64 CPU and takes the
-// AVX-512 forms where the CPU has them.
+// The pattern, the same for every pass family that has a vector form `foo`:
+//   foo.h          struct FooForms (the passes, as function pointers); scalar::fooForms() and
+//                  avx512::fooForms(); and sph::fooForms(), the forms this CPU runs
+//   foo.inc        the passes written once against a Lanes type (pair_lanes_scalar.h,
+//                  pair_lanes_avx512.h), where they are pair loops
+//   foo.cpp        the scalar form (namespace sph::scalar) and sph::fooForms(), which is
+//                  formsForThisCpu(scalar::fooForms, avx512::fooForms)
+//   foo_avx512.cpp the AVX-512 form (namespace sph::avx512, between SPH_AVX512_BEGIN and
+//                  SPH_AVX512_END, avx512_target.h)
+// The thesis's two pair stages (solvers/thesis/thesis_stages_avx512.cpp) keep hand-written
+// intrinsics: their 16-lane batches run on from one particle's list into the next's, which a
+// per-particle pass on lanes does not express.
+// The whole library is built for baseline x86-64, so one build runs on any x86-64 CPU and takes
+// the AVX-512 forms where the CPU has them.
 #pragma once
 
 #include <string>
@@ -29,11 +37,10 @@ bool simdAvailable(SimdLevel level);
 // is not available falls back to scalar (a portable default, never a crash).
 SimdLevel chooseSimdLevel(bool avx512_available, const char* env);
 
-// Calls the form of `fn` that simdLevel() names: dispatch(scalar::fn, avx512::fn, args...).
-template <typename ScalarFn, typename Avx512Fn, typename... Args>
-decltype(auto) dispatch(ScalarFn scalar_form, Avx512Fn avx512_form, Args&&... args) {
-  if (simdLevel() == SimdLevel::kAvx512) return avx512_form(static_cast<Args&&>(args)...);
-  return scalar_form(static_cast<Args&&>(args)...);
+// The forms of a pass family that simdLevel() names: formsForThisCpu(scalar::fooForms, avx512::fooForms).
+template <typename Forms>
+Forms formsForThisCpu(Forms (*scalar_forms)(), Forms (*avx512_forms)()) {
+  return simdLevel() == SimdLevel::kAvx512 ? avx512_forms() : scalar_forms();
 }
 
 }  // namespace sph

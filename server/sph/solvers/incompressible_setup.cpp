@@ -56,10 +56,6 @@ std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup
   return pressure;
 }
 
-VelocityPassForms dispatchedVelocityPassForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::velocityPassForms() : scalar::velocityPassForms();
-}
-
 VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next, std::vector<Vec3>& vorticity,
                                 bool confinement, bool last_step, bool track_surface_distance) {
   VelocityArrays v;

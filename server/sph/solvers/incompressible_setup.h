@@ -56,9 +56,6 @@ std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup
 // which the solver itself holds the water at rest. Returns the frames taken.
 int relaxAtRest(FluidSolver& solver, const FrameContext& frame, const IncompressibleSetup& setup, int max_frames);
 
-// The velocity passes' form this CPU runs (simd_level.h).
-VelocityPassForms dispatchedVelocityPassForms();
-
 // The velocity passes' view of `p` as it is now, with the solver's scratch for the smoothed
 // velocities and the vorticity (sized to p.size()). The vorticity only with `confinement`; |n| and
 // the surface-distance hop only in the frame's last step (`last_step`: what the adaptive step

@@ -48,10 +48,6 @@ PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& 
   return c;
 }
 
-PbfPassForms dispatchedPbfPassForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::pbfPassForms() : scalar::pbfPassForms();
-}
-
 PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<float>& lambda_step,
                       std::vector<Vec3>& wall_grad) {
   PbfArrays a;
@@ -101,7 +97,7 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
   wall_grad_.resize(n);
   if (state == Grid::kBuild) grid.build(p);
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
-  const PbfPassForms forms = dispatchedPbfPassForms();
+  const PbfPassForms forms = pbfPassForms();
   const std::span<const std::uint32_t> candidates = watched(p, placements, grid);
   a.position = p.position.data()->data();
   a.only = candidates.data();

@@ -33,9 +33,6 @@ inline constexpr std::uint8_t kPlacedThisFrame = 1;
 // the obstacles are the caller's to set for the time it moves particles at.
 PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& setup);
 
-// The pbf passes' form this CPU runs (simd_level.h).
-PbfPassForms dispatchedPbfPassForms();
-
 // The pbf passes' view of `p` with the caller's multipliers and wall-gradient scratch (sized to
 // p.size()); the positions are set per pass.
 PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<float>& lambda_step,

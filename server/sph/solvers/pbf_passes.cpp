@@ -8,8 +8,11 @@
 
 #include "sph/collision.h"
 #include "sph/simd/pair_lanes_scalar.h"
+#include "sph/simd/simd_level.h"
 
 namespace sph::scalar {
 using Lanes = ScalarLanes;
 #include "sph/solvers/pbf_passes.inc"
 }  // namespace sph::scalar
+
+sph::PbfPassForms sph::pbfPassForms() { return formsForThisCpu(scalar::pbfPassForms, avx512::pbfPassForms); }

@@ -94,5 +94,7 @@ PbfPassForms pbfPassForms();
 namespace avx512 {
 PbfPassForms pbfPassForms();
 }  // namespace avx512
+// The forms this CPU runs (simd_level.h).
+PbfPassForms pbfPassForms();
 
 }  // namespace sph

@@ -7,8 +7,13 @@
 #include <span>
 
 #include "sph/simd/pair_lanes_scalar.h"
+#include "sph/simd/simd_level.h"
 
 namespace sph::scalar {
 using Lanes = ScalarLanes;
 #include "sph/solvers/velocity_passes.inc"
 }  // namespace sph::scalar
+
+sph::VelocityPassForms sph::velocityPassForms() {
+  return formsForThisCpu(scalar::velocityPassForms, avx512::velocityPassForms);
+}

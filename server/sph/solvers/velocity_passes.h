@@ -61,5 +61,7 @@ VelocityPassForms velocityPassForms();
 namespace avx512 {
 VelocityPassForms velocityPassForms();
 }  // namespace avx512
+// The forms this CPU runs (simd_level.h).
+VelocityPassForms velocityPassForms();
 
 }  // namespace sph

@@ -4,8 +4,11 @@
 #include <span>
 
 #include "sph/simd/pair_lanes_scalar.h"
+#include "sph/simd/simd_level.h"
 
 namespace sph::scalar {
 using Lanes = ScalarLanes;
 #include "sph/solvers/dfsph/dfsph_passes.inc"
 }  // namespace sph::scalar
+
+sph::DfsphPassForms sph::dfsphPassForms() { return formsForThisCpu(scalar::dfsphPassForms, avx512::dfsphPassForms); }

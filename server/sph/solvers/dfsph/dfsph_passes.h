@@ -71,5 +71,7 @@ DfsphPassForms dfsphPassForms();
 namespace avx512 {
 DfsphPassForms dfsphPassForms();
 }  // namespace avx512
+// The forms this CPU runs (simd_level.h).
+DfsphPassForms dfsphPassForms();
 
 }  // namespace sph

@@ -17,10 +17,6 @@ namespace {
 // edge, would otherwise compress (IncompressibleSetup::contact).
 const WallReach kWallContact(0.5f, 0.3f);
 
-DfsphPassForms passForms() {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512::dfsphPassForms() : scalar::dfsphPassForms();
-}
-
 // The divergence solver leaves particles with fewer neighbours alone (BK17 4.2: at the surface
 // the divergence cannot be estimated from one side); a full resting neighbourhood has about 33.
 constexpr std::uint32_t kDivergenceNeighbours = 20;
@@ -110,7 +106,7 @@ void DfsphSolver::pressureAccelerations(const DfsphPassForms& forms, const Neigh
 int DfsphSolver::solve(const FrameContext& frame, std::vector<float>& warm, bool density_target, float dt) {
   ParticleSet& p = frame.particles;
   const std::size_t n = p.size();
-  const DfsphPassForms forms = passForms();
+  const DfsphPassForms forms = dfsphPassForms();
   const float rho0 = constants_.rest_density;
   const SimParams& params = frame.scene.params;
   // The floor holds the particles on it, and the constant-density solve knows (floor_contact.h).
@@ -216,7 +212,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
 
   // Densities, then the divergence solver on the new neighbourhoods (BK17 algorithm 1).
   timer.start(frame.timings.density_pressure_ms);
-  passForms().density(a, constants_, frame.grid);
+  dfsphPassForms().density(a, constants_, frame.grid);
   if (frame.scene.params.dfsph_divergence_tolerance > 0.0) {
     frame.stats.divergence_iterations += solve(frame, p.kappa_divergence, false, dt);
   }
@@ -231,7 +227,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   if (last) {
     velocity_constants_.xsph = xsphOfFrame(frame.scene.params.xsph_viscosity, frame.stats.substeps);
     const VelocityArrays v = velocityArraysOf(p, next_velocity_, vorticity_, false, true, frame.track_surface_distance);
-    dispatchedVelocityPassForms().smooth(v, velocity_constants_, frame.grid);
+    velocityPassForms().smooth(v, velocity_constants_, frame.grid);
     p.velocity.swap(next_velocity_);
   }
   timer.stop();

@@ -116,7 +116,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
   constants_.box = frame.scene.boundary.stateAt(t0 + dt);
   constants_.obstacles = &frame.scene.boundary;
   velocity_constants_.dt = dt;
-  const PbfPassForms forms = dispatchedPbfPassForms();
+  const PbfPassForms forms = pbfPassForms();
 
   // Predict (MM13 algorithm 1, lines 1-4): gravity, then the positions it leads to.
   PhaseTimer timer(frame.timings.accel_integrate_collide_ms);
@@ -213,7 +213,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
     velocity_constants_.xsph = last ? xsphOfFrame(frame.scene.params.xsph_viscosity, frame.stats.substeps) : 0.0f;
     const VelocityArrays v =
         velocityArraysOf(p, next_velocity_, vorticity_, confinement, last, frame.track_surface_distance);
-    const VelocityPassForms velocity = dispatchedVelocityPassForms();
+    const VelocityPassForms velocity = velocityPassForms();
     velocity.smooth(v, velocity_constants_, frame.grid);
     if (confinement) velocity.confine(v, velocity_constants_, frame.grid);
     p.velocity.swap(next_velocity_);

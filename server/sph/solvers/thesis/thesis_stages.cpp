@@ -20,13 +20,18 @@ KernelTable makeKernelTable(const SimParams& params) {
 
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                             ParticleSet& particles) {
-  dispatch(scalar::computeDensityPressure, avx512::computeDensityPressure, params, kernels, grid, particles);
+  thesisStageForms().computeDensityPressure(params, kernels, grid, particles);
 }
 
 void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                           ParticleSet& particles, bool propagate_surface_distance) {
-  dispatch(scalar::computeAccelerations, avx512::computeAccelerations, params, kernels, grid, particles,
-           propagate_surface_distance);
+  thesisStageForms().computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
+}
+
+ThesisStageForms thesisStageForms() { return formsForThisCpu(scalar::thesisStageForms, avx512::thesisStageForms); }
+
+ThesisStageForms scalar::thesisStageForms() {
+  return {scalar::computeDensityPressure, scalar::computeAccelerations, scalar::integrateInBareBox};
 }
 
 namespace scalar {
@@ -124,7 +129,7 @@ void integrateAndCollide(const SimParams& params, const Boundary& boundary, cons
     const float* radius = p.radius.data();
     float* velocity = p.velocity.data()->data();
     float* position = p.position.data()->data();
-    const auto integrate = simdLevel() == SimdLevel::kAvx512 ? avx512::integrateInBareBox : scalar::integrateInBareBox;
+    const auto integrate = thesisStageForms().integrateInBareBox;
 #pragma omp parallel
     {
       const ThreadShare share = threadShare(n);

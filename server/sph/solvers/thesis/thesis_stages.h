@@ -58,6 +58,24 @@ void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::s
                         const float* radius, float* velocity, float* position);
 }  // namespace avx512
 
+// The thesis's stages as one form (simd_level.h).
+struct ThesisStageForms {
+  void (*computeDensityPressure)(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                                 ParticleSet& particles);
+  void (*computeAccelerations)(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                               ParticleSet& particles, bool propagate_surface_distance);
+  void (*integrateInBareBox)(float dt, const BoxState& box, std::size_t begin, std::size_t end,
+                             const float* acceleration, const float* radius, float* velocity, float* position);
+};
+namespace scalar {
+ThesisStageForms thesisStageForms();
+}  // namespace scalar
+namespace avx512 {
+ThesisStageForms thesisStageForms();
+}  // namespace avx512
+// The forms this CPU runs.
+ThesisStageForms thesisStageForms();
+
 // Semi-implicit Euler, eqs. (3.21)-(3.22), then collisions with obstacles and the box at `box`.
 void integrateAndCollide(const SimParams& params, const Boundary& boundary, const BoxState& box,
                          ParticleSet& particles);

@@ -472,6 +472,8 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
   }
 }
 
+ThesisStageForms thesisStageForms() { return {computeDensityPressure, computeAccelerations, integrateInBareBox}; }
+
 }  // namespace sph::avx512
 
 SPH_AVX512_END
