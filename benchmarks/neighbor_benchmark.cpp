@@ -52,30 +52,22 @@ void stateArgs(benchmark::internal::Benchmark* b) {
   b->Unit(benchmark::kMillisecond);
 }
 
-void BM_NeighborSearch(benchmark::State& state) {
+// A pass of the neighbour grid over the warmed state: the whole search (build) or its binning.
+template <void (sph::NeighborGrid::*Pass)(const sph::ParticleSet&)>
+void BM_GridPass(benchmark::State& state) {
   const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
   omp_set_num_threads(static_cast<int>(state.range(0)));
   sph::NeighborGrid grid = sim.grid();
   for (auto _ : state) {
-    grid.build(sim.particles());
+    (grid.*Pass)(sim.particles());
     benchmark::ClobberMemory();
   }
   state.counters["particles"] = static_cast<double>(sim.particles().size());
   state.counters["mean_neighbors"] = grid.meanNeighbors();
-}
-BENCHMARK(BM_NeighborSearch)->Apply(stateArgs);
-
-void BM_Bin(benchmark::State& state) {
-  const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
-  omp_set_num_threads(static_cast<int>(state.range(0)));
-  sph::NeighborGrid grid = sim.grid();
-  for (auto _ : state) {
-    grid.bin(sim.particles());
-    benchmark::ClobberMemory();
-  }
   state.counters["cells"] = static_cast<double>(grid.cellCount());
 }
-BENCHMARK(BM_Bin)->Apply(stateArgs);
+BENCHMARK(BM_GridPass<&sph::NeighborGrid::build>)->Name("BM_NeighborSearch")->Apply(stateArgs);
+BENCHMARK(BM_GridPass<&sph::NeighborGrid::bin>)->Name("BM_Bin")->Apply(stateArgs);
 
 using DensityStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&,
                               sph::ParticleSet&);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <map>
 
 #include "net_test_util.h"
 
@@ -45,6 +46,16 @@ struct ControlRun {
     c.mutable_set_parameters();  // present even when empty
     for (const auto& [k, v] : values) (*c.mutable_set_parameters()->mutable_values())[k] = v;
     return c;
+  }
+  // Each request is refused as a bad parameter, and `kept` still reads as it did (nothing applied).
+  void expectBadParameters(std::initializer_list<Control> requests, std::map<std::string, double> kept) {
+    for (const Control& bad : requests) {
+      const ControlReply r = request(bad);
+      EXPECT_FALSE(r.ok());
+      EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_BAD_PARAMETER);
+      EXPECT_FALSE(r.error().empty());
+      for (const auto& [name, value] : kept) EXPECT_DOUBLE_EQ(r.status().parameters().at(name), value) << name;
+    }
   }
 };
 
@@ -188,17 +199,11 @@ TEST(ServerControl, SetParametersAllOrNothing) {
   EXPECT_DOUBLE_EQ(r.status().parameters().at("publish_hz"), 30.0);
 
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const Control& bad : {run.setParameters({{"no_such_parameter", 1.0}}), run.setParameters({{"gaze_radius", nan}}),
-                             run.setParameters({{"gaze_radius", 0.2}, {"publish_hz", 0.0}}),
-                             run.setParameters({{"gaze_radius", 0.5}}),  // beyond the ring radius
-                             run.setParameters({{"quantized", 0.5}}), run.setParameters({})}) {
-    r = run.request(bad);
-    EXPECT_FALSE(r.ok());
-    EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_BAD_PARAMETER);
-    EXPECT_FALSE(r.error().empty());
-    EXPECT_DOUBLE_EQ(r.status().parameters().at("gaze_radius"), 0.1) << "nothing applied";
-    EXPECT_DOUBLE_EQ(r.status().parameters().at("publish_hz"), 30.0);
-  }
+  run.expectBadParameters({run.setParameters({{"no_such_parameter", 1.0}}), run.setParameters({{"gaze_radius", nan}}),
+                           run.setParameters({{"gaze_radius", 0.2}, {"publish_hz", 0.0}}),
+                           run.setParameters({{"gaze_radius", 0.5}}),  // beyond the ring radius
+                           run.setParameters({{"quantized", 0.5}}), run.setParameters({})},
+                          {{"gaze_radius", 0.1}, {"publish_hz", 30.0}});
   ASSERT_TRUE(run.request(run.setParameters({{"quantized", 1.0}})).ok());
   EXPECT_TRUE(run.sub.waitFor([](const gsph::v1::Frame& f) {
     return f.encoding() == gsph::v1::POSITION_ENCODING_QUANTIZED16 && f.positions().size() == 6 * f.particle_count();
@@ -212,14 +217,9 @@ TEST(ServerControl, SetParametersTakesSimulationParametersAndRestarts) {
   ASSERT_TRUE(r.ok()) << r.error();
   EXPECT_DOUBLE_EQ(r.status().parameters().at("pbf_iterations"), 3.0);
   EXPECT_DOUBLE_EQ(r.status().parameters().at("xsph_viscosity"), 0.02);
-  for (const Control& bad : {run.setParameters({{"pbf_iterations", 2.5}}), run.setParameters({{"pbf_omega", 2.0}}),
-                             run.setParameters({{"xsph_viscosity", 0.05}, {"mass_large", 1.0}})}) {
-    r = run.request(bad);
-    EXPECT_FALSE(r.ok());
-    EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_BAD_PARAMETER);
-    EXPECT_DOUBLE_EQ(r.status().parameters().at("xsph_viscosity"), 0.02) << "nothing applied";
-    EXPECT_DOUBLE_EQ(r.status().parameters().at("pbf_iterations"), 3.0);
-  }
+  run.expectBadParameters({run.setParameters({{"pbf_iterations", 2.5}}), run.setParameters({{"pbf_omega", 2.0}}),
+                           run.setParameters({{"xsph_viscosity", 0.05}, {"mass_large", 1.0}})},
+                          {{"xsph_viscosity", 0.02}, {"pbf_iterations", 3.0}});
   // The old name of a renamed key still sets it.
   r = run.request(run.setParameters({{"cfl", 0.3}}));
   ASSERT_TRUE(r.ok()) << r.error();

@@ -13,20 +13,13 @@
 #include "sph/camera.h"
 #include "sph/checkpoint.h"
 #include "sph/simulation.h"
+#include "support/box_scene.h"
 
 namespace {
 
 sph::Scene tank(const std::string& preset) {
-  sph::Scene scene;
-  scene.name = "checkpoint_tank";
-  scene.source = "checkpoint_test";
-  EXPECT_TRUE(sph::presetByName(preset, scene.params));
-  scene.boundary.box.min = Eigen::Vector3d(0.0, 0.0, 0.0);
-  scene.boundary.box.max = Eigen::Vector3d(0.4, 0.5, 0.4);
-  scene.water.min = Eigen::Vector3d(0.0, 0.0, 0.0);
-  scene.water.max = Eigen::Vector3d(0.2, 0.3, 0.4);  // a dam break: the water moves
-  scene.large_particles = 600;
-  return scene;
+  // A dam break: the water moves.
+  return sph_test::boxScene("checkpoint_test", preset, {0.4, 0.5, 0.4}, {0.0, 0.0, 0.0}, {0.2, 0.3, 0.4}, 600);
 }
 
 std::unique_ptr<sph::Simulation> makeSim(const sph::Scene& scene, sph::Method method) {
@@ -135,7 +128,7 @@ TEST_F(CheckpointRefusal, OtherPresetSceneOrMethod) {
   sph::Scene other = tank("pbf");
   other.name = "another_scene";
   auto elsewhere = makeSim(other, sph::Method::Regular);
-  expectRefused(*elsewhere, "regular", "scene 'checkpoint_tank'");
+  expectRefused(*elsewhere, "regular", "scene 'checkpoint_test'");
   auto fresh = makeSim(tank("pbf"), sph::Method::Regular);
   expectRefused(*fresh, "surface", "method 'regular'");
 }

@@ -7,6 +7,7 @@
 
 #include "sph/simulation.h"
 #include "sph/solvers/thesis/coincident_pairs.h"
+#include "support/box_scene.h"
 
 namespace {
 
@@ -72,15 +73,8 @@ TEST(CoincidentPairs, PressurePushesThemApartAndConservesMomentum) {
 }
 
 TEST(CoincidentPairs, PileInABoxCornerComesApart) {
-  sph::Scene scene;
-  scene.name = "corner_pile";
-  scene.source = "coincident_pairs_test";
-  scene.params = sph::thesisPreset();
-  scene.boundary.box.min = Eigen::Vector3d::Zero();
-  scene.boundary.box.max = Eigen::Vector3d::Constant(0.5);
-  scene.water.min = Eigen::Vector3d(0.2, 0.0, 0.2);
-  scene.water.max = Eigen::Vector3d(0.4, 0.1, 0.4);
-  scene.large_particles = 140;
+  const sph::Scene scene = sph_test::boxScene("coincident_pairs_test", "thesis", Eigen::Vector3d::Constant(0.5),
+                                              {0.2, 0.0, 0.2}, {0.4, 0.1, 0.4}, 140);
   sph::Simulation sim(scene, sph::SizeClass::Large);
   sph::ParticleSet& p = sim.particles();
   const float r = p.radius[0];

@@ -7,20 +7,12 @@
 #include <cstring>
 
 #include "sph/simulation.h"
+#include "support/box_scene.h"
 
 namespace {
 
 sph::Scene smallScene() {
-  sph::Scene scene;
-  scene.name = "determinism";
-  scene.source = "determinism_test";
-  scene.params = sph::thesisPreset();
-  scene.boundary.box.min = Eigen::Vector3d(0.0, 0.0, 0.0);
-  scene.boundary.box.max = Eigen::Vector3d(0.6, 0.6, 0.6);
-  scene.water.min = Eigen::Vector3d(0.0, 0.0, 0.0);
-  scene.water.max = Eigen::Vector3d(0.3, 0.3, 0.3);
-  scene.large_particles = 1000;
-  return scene;
+  return sph_test::boxScene("determinism_test", "thesis", {0.6, 0.6, 0.6}, {0.0, 0.0, 0.0}, {0.3, 0.3, 0.3}, 1000);
 }
 
 struct RunResult {

@@ -6,18 +6,12 @@
 #include <algorithm>
 
 #include "sph/simulation.h"
+#include "support/box_scene.h"
 
 namespace {
 
 sph::Scene column(const std::string& preset) {
-  sph::Scene scene;
-  scene.name = "column";
-  scene.source = "settle_gate_test";
-  EXPECT_TRUE(sph::presetByName(preset, scene.params));
-  scene.boundary.box.max = Eigen::Vector3d(0.8, 0.5, 0.2);
-  scene.water.max = Eigen::Vector3d(0.2, 0.5, 0.2);
-  scene.large_particles = 300;
-  return scene;
+  return sph_test::boxScene("settle_gate_test", preset, {0.8, 0.5, 0.2}, {0.0, 0.0, 0.0}, {0.2, 0.5, 0.2}, 300);
 }
 
 float maxX(const sph::ParticleSet& p) {

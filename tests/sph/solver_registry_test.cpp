@@ -9,6 +9,7 @@
 #include "sph/collision.h"
 #include "sph/simulation.h"
 #include "sph/solvers/fluid_solver_factory.h"
+#include "support/box_scene.h"
 
 namespace {
 
@@ -35,14 +36,9 @@ class FreeFallSolver : public sph::FluidSolver {
 };
 
 sph::Scene airborneWater() {
-  sph::Scene scene;
-  scene.name = "airborne";
-  scene.source = "solver_registry_test";
+  sph::Scene scene =
+      sph_test::boxScene("solver_registry_test", "thesis", {1.0, 1.0, 1.0}, {0.4, 0.5, 0.4}, {0.6, 0.7, 0.6}, 50);
   scene.params.solver = kName;
-  scene.boundary.box.max = Eigen::Vector3d(1.0, 1.0, 1.0);
-  scene.water.min = Eigen::Vector3d(0.4, 0.5, 0.4);
-  scene.water.max = Eigen::Vector3d(0.6, 0.7, 0.6);
-  scene.large_particles = 50;
   return scene;
 }
 
