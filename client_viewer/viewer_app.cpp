@@ -120,7 +120,8 @@ ExitCode ViewerApp::run() {
         options_.duration_s > 0.0 && std::chrono::duration<double>(now - started_).count() >= options_.duration_s;
     const bool snapshot_now =
         !options_.snapshot.empty() && (frames_done || sim_time_reached || timed_out || duration_done);
-    if (snapshot_now) writeSnapshot();
+    // No frame, no picture: an empty PNG would pass for the water (the exit code says what happened).
+    if (snapshot_now && frames_shown_ > 0) writeSnapshot();
     target_.blitToWindow();
     glfwSwapBuffers(window);
     countRender(new_frame, now);

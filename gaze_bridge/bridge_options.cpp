@@ -30,19 +30,19 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
       ->check(cli::range(1, 65535))
       ->capture_default_str();
   app.add_option("--tracker-timeout", o.tracker_timeout_s, "Seconds of tracker silence before reconnecting")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
 
   app.add_option("--replay", o.replay_path, "Gaze recording to replay (with --source replay)");
   app.add_option("--replay-speed", o.replay_speed, "Replay speed factor (1 = as recorded)")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_flag("--replay-once", o.replay_once, "Stop at the end of the recording instead of looping");
 
   app.add_option("--synthetic-seed", o.synthetic.seed, "Seed of the synthetic fixation/saccade model")
       ->capture_default_str();
   app.add_option("--synthetic-rate", o.synthetic.rate_hz, "Synthetic samples per second")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_option("--synthetic-blink", o.synthetic.blink_probability, "Chance per fixation of a blink")
       ->check(cli::range(0, 1))
@@ -53,35 +53,35 @@ void addBridgeOptions(CLI::App& app, BridgeOptions& o) {
       ->check(cli::range(0, 1))
       ->capture_default_str();
   app.add_option("--max-gap", p.max_gap_s, "Gaps up to this many seconds are bridged; longer ones send 'lost'")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_option("--lost-repeat", p.lost_repeat_s, "Re-send 'lost' every this many seconds while it lasts")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_flag("--no-filter", o.no_filter, "Send raw points (no One Euro filter)");
   app.add_option("--mincutoff", p.one_euro.min_cutoff_hz, "One Euro minimum cutoff, Hz")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_option("--beta", p.one_euro.beta, "One Euro speed coefficient, per screen unit/s")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::nonNegative())
       ->capture_default_str();
   app.add_option("--dcutoff", p.one_euro.d_cutoff_hz, "One Euro derivative cutoff, Hz")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_flag("--ivt", p.ivt, "Compute the I-VT fixation flag");
   app.add_option("--ivt-threshold", p.ivt_threshold, "I-VT speed threshold, screen widths/s")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_option("--screen-aspect", p.screen_aspect, "Screen width / height (for I-VT speeds)")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
 
   app.add_option("--record", o.bridge.record_path, "Write every sent sample to this gaze recording (CSV)");
   app.add_option("--stats-interval", o.bridge.stats_interval_s, "Seconds between status lines")
-      ->check(CLI::PositiveNumber)
+      ->check(cli::positive())
       ->capture_default_str();
   app.add_option("--duration", o.duration_s, "Stop after this many seconds (0: run until SIGINT/SIGTERM)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::nonNegative())
       ->capture_default_str();
   app.add_option("--log-level", o.log_level, "trace, debug, info, warn, error, off")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}))

@@ -81,7 +81,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->check(cli::range(1, 256))
       ->capture_default_str();
   cli.add_option("--max-steps", sim.max_steps, "stop after this many steps (0: run until SIGINT/SIGTERM)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::nonNegative())
       ->capture_default_str();
   cli.add_option("--frames-endpoint", ep.frames, "XPUB: frames out")->capture_default_str();
   cli.add_option("--gaze-endpoint", ep.gaze, "GazeSample in")->capture_default_str();
@@ -192,10 +192,6 @@ int main(int argc, char** argv) {
     spdlog::info("endpoint gaze {}", ep.gaze);
     spdlog::info("endpoint pose {}", ep.pose);
     spdlog::info("endpoint control {}", ep.control);
-    spdlog::info("scene {}, preset {}, method {}, {} Hz, {}", o.server.sim.scene,
-                 o.server.sim.preset.empty() ? "(scene's own)" : o.server.sim.preset,
-                 o.method.empty() ? "(scene default)" : o.method, o.server.sim.settings.publish_hz,
-                 o.server.sim.settings.free_run ? "free-run" : "real time");
     spdlog::info("file descriptors: limit {} (was {}), up to {} peers per socket", fds.now, fds.before,
                  o.server.net.max_peers);
     if (o.server.net.curve) {

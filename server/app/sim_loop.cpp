@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <utility>
 
 #include "net/input_validation.h"
@@ -41,7 +42,19 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
   encoder_.setNeighborCounts(options.neighbor_counts);
   session_.usePreset(options.preset);
   session_.useSimParameters(options.sim_parameters);
+  // Filling the water and letting fresh incompressible water settle takes a few seconds.
+  spdlog::info("loading scene {}: filling the water and letting it settle", options.scene);
   session_.load(options.scene, options.method, /*allow_paths=*/true);
+  const sph::Scene& scene = session_.scene();
+  spdlog::info("scene {}, preset {}, method {}, {} particles, {} Hz, {}", scene.name, session_.preset(),
+               sph::methodName(session_.method()), session_.sim().particles().size(), options.settings.publish_hz,
+               options.settings.free_run ? "free-run" : "real time");
+  // sph_bench replays a scene's gaze recording; the server takes gaze from the network, but a
+  // scene naming a recording that is not there is worth a word.
+  if (!scene.gaze_recording.empty() && !std::filesystem::exists(scene.gaze_recording)) {
+    spdlog::warn("scene {}: its gaze recording {} does not exist (sph_bench's gaze methods need it)", scene.name,
+                 scene.gaze_recording);
+  }
   if (!options.load_state.empty()) {
     const sph::CheckpointInfo info =
         sph::loadCheckpoint(session_.sim(), sph::methodName(session_.method()), options.load_state);

@@ -128,8 +128,8 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
       for (const auto& m : methods) any = any ? any : find(scene, preset, m);
       if (any) {
         md += '\n';
-        md += std::to_string(any->run.frames);
-        md += " frames, ";
+        md += framesText(any->run);
+        md += ", ";
         md += std::to_string(any->run.threads);
         md += " threads (OpenMP wait: ";
         md += any->run.omp_wait;

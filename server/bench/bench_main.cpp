@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include "bench/bench_plan.h"
 #include "cli/cli_conventions.h"
@@ -30,13 +31,27 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   app.add_option("--scene", request.scenes, "scene name, path to a .json file, comma list, or 'all'")
       ->capture_default_str();
   app.add_option("--method", request.methods,
-                 "regular, surface, gaze, hybrid, a comma list, or 'all' (default: each scene's own)");
+                 "regular, surface, gaze, hybrid, a comma list, or 'all' (default: each scene's own)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            if (text == "all") return {};
+            std::stringstream list(text);
+            for (std::string method; std::getline(list, method, ',');) {
+              try {
+                bench::requireKnownMethod(method);
+              } catch (const std::invalid_argument& e) {
+                return e.what();
+              }
+            }
+            return {};
+          },
+          "METHOD[,METHOD...]"));
   app.add_option("--gaze", request.gaze_path,
                  "gaze recording (CSV: time_s,x,y,valid) replayed for gaze and hybrid, instead of "
                  "the scene's own")
       ->check(CLI::ExistingFile);
   app.add_option("--frames", request.frames, "frames (steps) to run; 0 = the scene's own count")
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::nonNegative());
   app.add_option("--preset", request.presets,
                  "fluid preset for every scene: thesis, pbf or dfsph (default: each scene's own); a comma "
                  "list runs each scene once per preset, taking turns, and compares their cost")
@@ -56,10 +71,10 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   app.add_option("--interleave", request.interleave,
                  "frames each method of a scene runs before the next takes its turn, so all see the "
                  "same machine load (0 = each method start to end, one after another)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(cli::nonNegative())
       ->capture_default_str();
   app.add_option("--export-every", request.export_every, "write a particle snapshot every K frames (0 = never)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::nonNegative());
   app.add_option("--export-format", export_format,
                  "vtu (binary, with a particles.pvd time index for ParaView), vtk (legacy ASCII) or csv")
       ->check(CLI::IsMember({"vtu", "vtk", "csv"}))

@@ -65,7 +65,9 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["scene"] = run.scene;
   j["method"] = run.method;
   j["preset"] = run.preset;
-  j["frames"] = run.frames;
+  j["frames"] = run.framesRun();  // what the figures are over
+  j["frames_asked"] = run.frames;
+  j["interrupted"] = run.interrupted();
   j["threads"] = run.threads;
   j["omp_wait"] = run.omp_wait;
   // What else ran on the machine meanwhile (machine_load.h); null where it cannot be read.
@@ -146,18 +148,23 @@ std::string describeVolume(const RunResult& run) {
   return text;
 }
 
+std::string framesText(const RunResult& run) {
+  if (!run.interrupted()) return std::to_string(run.frames) + " frames";
+  return std::to_string(run.framesRun()) + " of " + std::to_string(run.frames) + " frames (INTERRUPTED)";
+}
+
 std::string summaryText(const RunResult& run, const Summary& s) {
   char buf[2048];
   std::snprintf(buf, sizeof buf,
-                "%s/%s (%s): %d frames, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
+                "%s/%s (%s): %s, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
                 "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s, "
                 "%.2f wall s per simulated s | "
                 "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
                 "NaN %zu, outside %zu | at the end: %s | other load: %s",
-                run.scene.c_str(), run.method.c_str(), run.preset.c_str(), run.frames, run.threads, s.neighbor.mean,
-                s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean, s.total.p95,
-                s.steps_per_s, s.wall_per_simulated, s.mean_large, s.mean_small, s.mean_neighbors, s.mean_density_ratio,
-                s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values, s.outside_box,
+                run.scene.c_str(), run.method.c_str(), run.preset.c_str(), framesText(run).c_str(), run.threads,
+                s.neighbor.mean, s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean,
+                s.total.p95, s.steps_per_s, s.wall_per_simulated, s.mean_large, s.mean_small, s.mean_neighbors,
+                s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values, s.outside_box,
                 describeVolume(run).c_str(), describe(run.machine_load).c_str());
   return buf;
 }

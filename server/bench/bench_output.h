@@ -31,6 +31,8 @@ void writeFramesCsv(const RunResult& run, const std::string& path);
 std::string describeVolume(const RunResult& run);
 // One line for the terminal.
 std::string summaryText(const RunResult& run, const Summary& s);
+// "900 frames", or for a run stopped early "30 of 3000 frames (INTERRUPTED)".
+std::string framesText(const RunResult& run);
 
 // Vtu: binary VTK XML with a .pvd time index (vtu_export.h); Vtk: legacy ASCII; Csv: one row a particle.
 enum class SnapshotFormat { Csv, Vtk, Vtu };

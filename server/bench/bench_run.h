@@ -43,7 +43,7 @@ struct RunResult {
   std::string scene;
   std::string method;
   std::string preset;
-  int frames = 0;
+  int frames = 0;              // asked; framesRun() were run (fewer when the bench was interrupted)
   double frame_seconds = 0.0;  // simulated time a frame advances (the scene's time_step)
   int threads = 0;
   std::string omp_wait;             // process::ompWaitDescription()
@@ -53,7 +53,9 @@ struct RunResult {
   // Other processes and the hypervisor between the run's start and result(): for runs that take
   // turns (sph_bench --interleave), the window of the whole scene.
   MachineLoad machine_load;
-  std::vector<FrameRecord> records;
+  std::vector<FrameRecord> records;  // one a frame run: every figure of the summary is over these
+  int framesRun() const { return static_cast<int>(records.size()); }
+  bool interrupted() const { return framesRun() < frames; }
   // At the last frame: the water's volume as m / rho0 (m^3; as sum m / rho it is the last record's
   // `volume`), and its level (water_level.h).
   double incompressible_volume = 0.0;

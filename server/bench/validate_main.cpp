@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", o.out, "output folder")->capture_default_str();
   app.add_option("--threads", o.threads, "OpenMP threads")->check(cli::range(1, 256))->capture_default_str();
   app.add_option("--hydrostatic-frames", o.hydrostatic_frames, "frames the tank settles for (0: the scene's own)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(cli::nonNegative());
   app.add_flag("!--no-plot", o.plot, "write no PNGs");
   if (auto code = cli::parse(app, argc, argv)) return *code;
   try {

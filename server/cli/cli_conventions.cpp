@@ -3,7 +3,9 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <cstdio>
+#include <regex>
 #include <sstream>
 
 namespace cli {
@@ -62,6 +64,17 @@ std::string usageMessage(const CLI::ParseError& error) {
       return what.substr(0, colon) + " needs a value";
     }
   }
+  // A value outside a name list (CLI::CheckedTransformer): "--render: Check nosuch value in
+  // {fluid->0,particles->1} OR {0,1} FAILED" -> "--render: 'nosuch' is not one of fluid, particles".
+  static const std::regex checked(R"(^(--?[\w-]+): Check (.*) value in \{([^}]*)\}.* FAILED$)");
+  if (std::smatch m; std::regex_match(what, m, checked)) {
+    std::string names;
+    std::stringstream entries(m[3].str());
+    for (std::string entry; std::getline(entries, entry, ',');) {
+      names += (names.empty() ? "" : ", ") + entry.substr(0, entry.find("->"));
+    }
+    return m[1].str() + ": '" + m[2].str() + "' is not one of " + names;
+  }
   if (dynamic_cast<const CLI::RequiredError*>(&error) != nullptr) {
     const std::string prefix = " is required";
     if (what.size() > prefix.size() && what.compare(what.size() - prefix.size(), prefix.size(), prefix) == 0) {
@@ -70,6 +83,23 @@ std::string usageMessage(const CLI::ParseError& error) {
   }
   return what;
 }
+
+namespace {
+
+// The first command-line word that looks like an option ("--name", "--name=value", "-x") and is
+// none of the app's; "" when every one is known.
+std::string firstUnknownOption(const CLI::App& app, int argc, char** argv) {
+  for (int k = 1; k < argc; ++k) {
+    const std::string word = argv[k];
+    if (word.size() < 2 || word[0] != '-' || word == "--") continue;
+    if (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.') continue;  // a negative number
+    const std::string name = word.substr(0, word.find('='));
+    if (app.get_option_no_throw(name) == nullptr) return name;
+  }
+  return {};
+}
+
+}  // namespace
 
 std::optional<int> parse(CLI::App& app, int argc, char** argv) {
   try {
@@ -80,6 +110,13 @@ std::optional<int> parse(CLI::App& app, int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::RequiredError& e) {
+    // CLI11 checks what is required before what is unknown: a mistyped option would read as a
+    // missing argument.
+    if (const std::string unknown = firstUnknownOption(app, argc, argv); !unknown.empty()) {
+      return usageError(app, "unknown option or argument: " + unknown);
+    }
+    return usageError(app, usageMessage(e));
   } catch (const CLI::ParseError& e) {
     return usageError(app, usageMessage(e));
   }
@@ -108,6 +145,33 @@ CLI::Validator range(double lo, double hi) {
       },
       "NUMBER " + shortNumber(lo) + ".." + shortNumber(hi));
 }
+
+namespace {
+
+CLI::Validator above(bool or_equal) {
+  const std::string expected = std::string("expected a number ") + (or_equal ? ">= 0" : "> 0");
+  return CLI::Validator(
+      [or_equal, expected](std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        const bool in_range = or_equal ? v >= 0.0 : v > 0.0;
+        if (used == 0 || used != text.size() || !std::isfinite(v) || !in_range) {
+          return expected + ", got '" + text + "'";
+        }
+        return {};
+      },
+      or_equal ? "NUMBER >= 0" : "NUMBER > 0");
+}
+
+}  // namespace
+
+CLI::Validator nonNegative() { return above(true); }
+CLI::Validator positive() { return above(false); }
 
 void logToStderr() {
   // Unnamed and unregistered, like the default logger it replaces: lines read as before.

@@ -34,6 +34,10 @@ std::string usageMessage(const CLI::ParseError& error);
 // A number in [lo, hi]; the error says so in plain numbers ("expected a number from 0.001 to 1000").
 CLI::Validator range(double lo, double hi);
 
+// A number >= 0, or > 0; the error says so in one line ("expected a number >= 0, got '-5'").
+CLI::Validator nonNegative();
+CLI::Validator positive();
+
 // Every spdlog message to stderr (the default logger writes to stdout).
 void logToStderr();
 

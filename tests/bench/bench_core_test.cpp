@@ -161,6 +161,22 @@ TEST(BenchRun, ResultReadsTheWaterLevelAtTheEnd) {
   EXPECT_NE(text.find(rms), std::string::npos) << text;
 }
 
+// A run stopped early says so, with the frames it ran, wherever its figures go.
+TEST(BenchSummary, AnInterruptedRunSaysSoAndCountsTheFramesRun) {
+  bench::RunSummary s;
+  s.run.scene = "dambreak";
+  s.run.method = "gaze";
+  s.run.frames = 3000;
+  s.run.records.resize(30);
+  EXPECT_TRUE(s.run.interrupted());
+  EXPECT_EQ(bench::framesText(s.run), "30 of 3000 frames (INTERRUPTED)");
+  EXPECT_NE(bench::summaryText(s.run, s.summary).find("30 of 3000 frames (INTERRUPTED)"), std::string::npos);
+  EXPECT_NE(bench::comparisonMarkdown({s}).find("30 of 3000 frames (INTERRUPTED)"), std::string::npos);
+  s.run.records.resize(3000);
+  EXPECT_FALSE(s.run.interrupted());
+  EXPECT_EQ(bench::framesText(s.run), "3000 frames");
+}
+
 TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   bench::RunSummary regular, gaze_run;
   regular.run.scene = gaze_run.run.scene = "dambreak";
@@ -170,6 +186,8 @@ TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   gaze_run.summary.total.mean = 4.0;
   gaze_run.summary.adaptive.mean = 0.2;
   regular.run.frames = gaze_run.run.frames = 300;
+  regular.run.records.resize(300);
+  gaze_run.run.records.resize(300);
   regular.run.threads = gaze_run.run.threads = 2;
   regular.run.omp_wait = gaze_run.run.omp_wait = "GOMP_SPINCOUNT=1000";
   regular.run.machine_load = gaze_run.run.machine_load = {true, 0.25, 0.05};

@@ -5,6 +5,7 @@ exit code 2, nothing on stdout; logs go to stderr, stdout carries only data and 
 Run by ctest (tests/cli/CMakeLists.txt) with SPH_BIN_DIR = the build's bin/ and SPH_SOURCE_DIR."""
 
 import contextlib
+import json
 import os
 import select
 import shutil
@@ -122,6 +123,24 @@ class UsageErrors(unittest.TestCase):
         self.assert_usage_error("gaze_bridge", ["--min-confidence", "2"], "--min-confidence", "0 to 1")
         self.assert_usage_error("sph_relay", ["--hwm", "0"], "--hwm", "1 to 100000")
 
+    def test_out_of_range_numbers_and_names_in_a_short_line(self):
+        for program, args, words in [
+                ("sph_bench", ["--frames", "-5"], ["--frames", ">= 0", "-5"]),
+                ("sph_bench", ["--interleave", "-1"], ["--interleave", ">= 0"]),
+                ("sph_bench", ["--export-every", "-1"], ["--export-every", ">= 0"]),
+                ("sph_bench", ["--method", "nosuch"], ["--method", "nosuch", "regular", "hybrid"]),
+                ("gaze_bridge", ["--duration", "-1"], ["--duration", ">= 0"]),
+                ("sph_viewer", ["--render", "nosuch"], ["--render", "'nosuch' is not one of fluid, particles"]),
+                ("sph_keygen", ["--frobnicate"], ["unknown option", "--frobnicate"]),
+                ("sph_load", ["-n", "-1"], ["--subscribers", "0..256"]),
+                ("sph_server", ["--param", "pbf_omega=2"], ["--param", "pbf_omega", "(0, 1]"]),
+                ("sph_server", ["--param", "nosuch=1"], ["--param", "nosuch"])]:
+            with self.subTest(program=program, args=args):
+                line = self.assert_usage_error(program, args, *words)
+                self.assertLess(len(line), 200, line)
+                self.assertNotIn("Check", line)
+                self.assertNotIn("options.", line)
+
     def test_adaptive_settings(self):
         self.assert_usage_error("sph_server", ["--adaptive", "alpha=x"], "--adaptive", "alpha=x", "number")
         line = self.assert_usage_error("sph_server", ["--adaptive", "nosuch=1"], "nosuch")
@@ -207,14 +226,20 @@ class StreamsAndExitCodes(unittest.TestCase):
             first = bench.stderr.readline()
             self.assertIn("frame", first)
             bench.send_signal(signal.SIGINT)
-            _, err = bench.communicate(timeout=DEADLINE_S)
+            report, err = bench.communicate(timeout=DEADLINE_S)
             self.assertEqual(bench.returncode, 130, err)
             self.assertIn("interrupted", err)
             self.assertIn(out, err)
             with open(os.path.join(out, "frames.csv"), encoding="utf-8") as f:
                 rows = f.read().splitlines()
             self.assertGreaterEqual(len(rows), 2)  # the header and at least the first frame
-            self.assertTrue(os.path.exists(os.path.join(out, "summary.json")))
+            # The summary says what was run, not what was asked: a partial run never passes for a whole one.
+            with open(os.path.join(out, "summary.json"), encoding="utf-8") as f:
+                summary = json.load(f)
+            self.assertTrue(summary["interrupted"])
+            self.assertEqual(summary["frames_asked"], 100000)
+            self.assertEqual(summary["frames"], len(rows) - 1)
+            self.assertIn("of 100000 frames (INTERRUPTED)", report)
 
     def test_viewer_without_server_names_the_endpoint_and_exits_3(self):
         if shutil.which("Xvfb") is None:
@@ -232,6 +257,7 @@ class StreamsAndExitCodes(unittest.TestCase):
                 self.assertIn(f"waiting for frames from {endpoint}", r.stderr)
                 self.assertIn(f"no frame from a server at {endpoint}", r.stderr)
                 self.assertEqual(r.stdout, "")
+                self.assertFalse(os.path.exists(os.path.join(out, "x.png")), "a picture without water was written")
 
 
 class MainCommand(unittest.TestCase):

@@ -35,9 +35,16 @@ def main():
     p.add_argument("values", nargs="*", help="scene name, method, preset, or NAME=VALUE pairs")
     p.add_argument("--timeout", type=float, default=5.0)
     args = p.parse_args()
+    try:
+        arguments = arguments_for(args.verb, args.values)
+    except (IndexError, ValueError) as error:
+        # A missing value, NAME=VALUE that is not one, an unknown method name: the client's own check.
+        p.error(f"{args.verb}: {error}" if str(error) else f"{args.verb} needs a value")
     with ControlClient(Endpoints.from_arguments(args).control, timeout_s=args.timeout, **security(args)) as control:
         try:
-            reply = control.request(args.verb, **arguments_for(args.verb, args.values))
+            reply = control.request(args.verb, **arguments)
+        except ValueError as error:
+            p.error(f"{args.verb}: {error}")
         except ControlTimeout as error:
             print(error, file=sys.stderr)
             return 1

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import json
 import signal
 import sys
@@ -50,6 +51,17 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def _in_option_words(message: str) -> str:
+    """A check of the command line's phase names the option a user typed, not the phase's field:
+    "options.subscribers = -1: ..." -> "--subscribers -1: ..."."""
+    match = re.match(r"options\.(\w+) = (.*?): (.*)", message)
+    if not match:
+        return message
+    field, value, rule = match.groups()
+    option = {"duration_s": "duration"}.get(field, field).replace("_", "-")
+    return f"--{option} {value}: {rule}"
+
+
 def main(argv=None) -> int:
     args = parser().parse_args(argv)
     try:
@@ -66,7 +78,7 @@ def main(argv=None) -> int:
                 raise CurveConfigError("--curve-secret and --curve-server go together")
             load_client_keys(args.curve_secret, args.curve_server)  # fail now, not in eight threads
     except (ScenarioError, CurveConfigError) as error:
-        print(f"sph_load: {error}", file=sys.stderr)
+        print(f"sph_load: {_in_option_words(str(error))} (see sph_load --help)", file=sys.stderr)
         return 2
     stop = threading.Event()
     signal.signal(signal.SIGINT, lambda *_: stop.set())
