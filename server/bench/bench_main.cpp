@@ -53,10 +53,11 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   app.add_option("--frames", request.frames, "frames (steps) to run; 0 = the scene's own count")
       ->check(cli::nonNegative());
   app.add_option("--preset", request.presets,
-                 "fluid preset for every scene: thesis, pbf or dfsph (default: each scene's own); a comma "
-                 "list runs each scene once per preset, taking turns, and compares their cost")
+                 "fluid preset for every scene: pbf (the default, as in sph_server), dfsph, thesis (the thesis's "
+                 "compressible SPH: its tables) or scene (each scene file's own); a comma list runs each scene "
+                 "once per preset, taking turns, and compares their cost")
       ->delimiter(',')
-      ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
+      ->check(CLI::IsMember({"thesis", "pbf", "dfsph", "scene"}));
   app.add_option("--load-state", request.load_state,
                  "continue from this checkpoint (written by --save-state; one scene, method and preset)")
       ->check(CLI::ExistingFile);
@@ -91,6 +92,12 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   }
   if (const std::string twice = bench::firstRepeated(request.presets); !twice.empty()) {
     return cli::usageError(app, "--preset: " + twice + " named twice");
+  }
+  // One rule for every program: pbf unless told otherwise; "scene" is the scene file's own preset
+  // (an empty name to the plan).
+  if (request.presets.empty()) request.presets = {"pbf"};
+  for (std::string& preset : request.presets) {
+    if (preset == "scene") preset.clear();
   }
   request.export_format = export_format == "csv"   ? bench::SnapshotFormat::Csv
                           : export_format == "vtk" ? bench::SnapshotFormat::Vtk

@@ -213,6 +213,7 @@ class StreamsAndExitCodes(unittest.TestCase):
             r = run("sph_bench", "--scene", "small_box", "--frames", "2", "--out", out)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn("small_box/", r.stdout)
+            self.assertIn("(pbf)", r.stdout, "sph_bench runs pbf unless told otherwise, as sph_server does")
             self.assertNotIn("frame 1/2", r.stdout)
             self.assertIn("frame", r.stderr)
             self.assertTrue(os.path.exists(os.path.join(out, "frames.csv")))
