@@ -10,6 +10,8 @@ packages=(
   libmsgpack-cxx-dev
   libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth libxtst-dev
   gnuplot-nox python3-zmq python3-protobuf python3-numpy
+  python3-pip python3-venv  # the Python client's install test (pip install with no index)
+  help2man lintian  # the package's manual pages, and Debian's own checks of the package
   clang libclang-rt-14-dev
   dpkg-dev file  # cpack's Debian package: dpkg-shlibdeps finds the dependencies, file tells it the ELF files
 )

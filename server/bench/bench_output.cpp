@@ -179,7 +179,7 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
       const auto& u = p.velocity[i];
       out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ',' << u.z()
           << ',' << p.density[i] << ',' << p.pressure[i] << ',' << p.mass[i] << ',' << p.radius[i] << ','
-          << sph::sizeClassName(p.size_class[i]) << '\n';
+          << static_cast<int>(p.size_class[i]) << '\n';
     }
     return;
   }
@@ -195,8 +195,15 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
   for (std::size_t i = 0; i < n; ++i) {
     out << p.velocity[i].x() << ' ' << p.velocity[i].y() << ' ' << p.velocity[i].z() << '\n';
   }
-  out << "SCALARS density float 1\nLOOKUP_TABLE default\n";
-  for (std::size_t i = 0; i < n; ++i) out << p.density[i] << '\n';
+  // The fields of the VTU and CSV forms, in the same order.
+  const auto scalars = [&](const char* name, const std::vector<float>& v) {
+    out << "SCALARS " << name << " float 1\nLOOKUP_TABLE default\n";
+    for (std::size_t i = 0; i < n; ++i) out << v[i] << '\n';
+  };
+  scalars("density", p.density);
+  scalars("pressure", p.pressure);
+  scalars("mass", p.mass);
+  scalars("radius", p.radius);
   out << "SCALARS size_class int 1\nLOOKUP_TABLE default\n";  // 0 SMALL, 1 LARGE
   for (std::size_t i = 0; i < n; ++i) out << static_cast<int>(p.size_class[i]) << '\n';
   out << "SCALARS id unsigned_int 1\nLOOKUP_TABLE default\n";

@@ -7,12 +7,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
 
+#include "bench/bench_output.h"
 #include "bench/vtu_export.h"
 
 namespace {
@@ -106,3 +108,61 @@ TEST(VtuExport, PvdListsEverySnapshotWithItsTime) {
 }
 
 }  // namespace
+
+namespace {
+
+// The fields a snapshot file carries, by name: the VTU's DataArray names, the legacy VTK's POINTS
+// (position) and VECTORS / SCALARS, the CSV's header (x, y, z as position; vx, vy, vz as velocity).
+std::set<std::string> fieldsOf(const std::string& file, bench::SnapshotFormat format) {
+  std::set<std::string> fields;
+  const std::string text = readAll(file);
+  std::istringstream lines(text);
+  std::string line;
+  if (format == bench::SnapshotFormat::Csv) {
+    std::getline(lines, line);
+    std::istringstream header(line);
+    for (std::string name; std::getline(header, name, ',');) {
+      if (name == "x" || name == "y" || name == "z") name = "position";
+      if (name == "vx" || name == "vy" || name == "vz") name = "velocity";
+      fields.insert(name);
+    }
+    return fields;
+  }
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string first, name;
+    words >> first >> name;
+    if (first == "POINTS") fields.insert("position");
+    if (first == "VECTORS" || first == "SCALARS") fields.insert(name);
+    for (std::size_t at = line.find("Name=\""); at != std::string::npos; at = line.find("Name=\"", at + 1)) {
+      const std::size_t from = at + 6;
+      const std::string array = line.substr(from, line.find('"', from) - from);
+      // The cells' arrays and the time are the file's structure, not particle fields.
+      if (array != "TimeValue" && array != "connectivity" && array != "offsets" && array != "types") {
+        fields.insert(array);
+      }
+    }
+  }
+  return fields;
+}
+
+}  // namespace
+
+TEST(SnapshotFormats, AllThreeCarryTheSameFieldsAndTheClassAsANumber) {
+  const sph::ParticleSet p = threeParticles();
+  const std::string vtu = scratch("fields.vtu"), vtk = scratch("fields.vtk"), csv = scratch("fields.csv");
+  bench::writeVtu(p, 0.0, vtu);
+  bench::writeSnapshot(p, bench::SnapshotFormat::Vtk, vtk);
+  bench::writeSnapshot(p, bench::SnapshotFormat::Csv, csv);
+  const std::set<std::string> expected = {"position", "velocity", "density",    "pressure",
+                                          "mass",     "radius",   "size_class", "id"};
+  EXPECT_EQ(fieldsOf(vtu, bench::SnapshotFormat::Vtu), expected);
+  EXPECT_EQ(fieldsOf(vtk, bench::SnapshotFormat::Vtk), expected);
+  EXPECT_EQ(fieldsOf(csv, bench::SnapshotFormat::Csv), expected);
+  std::istringstream rows(readAll(csv));
+  std::string header, second_row;
+  std::getline(rows, header);
+  std::getline(rows, second_row);
+  std::getline(rows, second_row);  // the LARGE particle
+  EXPECT_EQ(second_row.substr(second_row.rfind(',') + 1), "1") << second_row;
+}

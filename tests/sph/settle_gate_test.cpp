@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "sph/fill_water.h"
 #include "sph/simulation.h"
 #include "support/box_scene.h"
 
@@ -36,6 +38,25 @@ TEST(SettleGate, ADamBreakColumnStandsUntilItIsReleased) {
     sim.step();
     EXPECT_GT(maxX(sim.particles()), 0.0f);
   }
+}
+
+// The thesis's water starts on its lattice, unmoved, with the density and pressure it has there
+// (what a frame of the start shows).
+TEST(SettleGate, TheThesisStartsOnItsLatticeWithItsDensityKnown) {
+  const sph::Scene scene = column("thesis");
+  sph::Simulation sim(scene, sph::SizeClass::Small);
+  sph::ParticleSet fresh;
+  sph::fillWater(scene, sph::SizeClass::Small, sim.solver(), fresh);
+  ASSERT_EQ(fresh.size(), sim.particles().size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < fresh.size(); ++i) {
+    EXPECT_EQ(sim.particles().position[i], fresh.position[i]);
+    EXPECT_GT(sim.particles().density[i], 0.0f);  // a particle counts itself (3.11)
+    EXPECT_TRUE(std::isfinite(sim.particles().pressure[i]));
+    sum += sim.particles().density[i];
+  }
+  // The thesis's walls do not count in the density: the corners read less than rho0, the inside more.
+  EXPECT_GT(sum / static_cast<double>(fresh.size()), 0.5 * scene.params.rest_density);
 }
 
 }  // namespace

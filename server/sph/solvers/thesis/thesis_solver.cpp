@@ -18,6 +18,11 @@ void ThesisSolver::advance(const FrameContext& f) {
   integrateAndCollide(f.scene.params, f.scene.boundary, f.scene.boundary.stateAt(f.time + f.dt), f.particles);
 }
 
+void ThesisSolver::settleFreshWater(const FrameContext& f) {
+  f.grid.build(f.particles);
+  computeDensityPressure(f.scene.params, kernels_, f.grid, f.particles);
+}
+
 double ThesisSolver::fillInset(double spacing, double radius) const {
   // The thesis's collision keeps a particle a radius off a wall (3.29): the first lattice point
   // sits a radius in where that is more than half a spacing, so no particle starts in contact.

@@ -13,6 +13,9 @@ class ThesisSolver : public FluidSolver {
  public:
   explicit ThesisSolver(const Scene& scene);
   void advance(const FrameContext& frame) override;
+  // The lattice stays as the thesis started it; its density and pressure are computed, so that the
+  // first frame shows the water's own (the first step computes them again).
+  void settleFreshWater(const FrameContext& frame) override;
   double fillInset(double spacing, double radius) const override;
 
  private:
