@@ -55,6 +55,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   app::SimLoopOptions& sim = o.server.sim;
   net::Endpoints& ep = o.server.net.endpoints;
   sim.scene_dir = scene::defaultSceneDir();
+  cli.option_defaults()->group("Scene and physics");
   cli.add_option("--scene", sim.scene, "scene name in --scene-dir, or a path to a scene file")->capture_default_str();
   cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")->capture_default_str();
   cli.add_option("--method", o.method, "regular, surface, gaze or hybrid (default: the scene's method)")
@@ -65,6 +66,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
                  "thesis (the thesis's compressible SPH, k = 3), or scene (the scene file's own preset)")
       ->check(CLI::IsMember({"pbf", "dfsph", "thesis", "scene"}))
       ->capture_default_str();
+  cli.option_defaults()->group("Run and frames");
   cli.add_option("--load-state", sim.load_state,
                  "continue from this checkpoint (written by --save-state with the same scene, preset and method)")
       ->check(CLI::ExistingFile);
@@ -83,6 +85,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--max-steps", sim.max_steps, "stop after this many steps (0: run until SIGINT/SIGTERM)")
       ->check(cli::nonNegative())
       ->capture_default_str();
+  cli.option_defaults()->group("Network");
   cli.add_option("--frames-endpoint", ep.frames, "XPUB: frames out")->capture_default_str();
   cli.add_option("--gaze-endpoint", ep.gaze, "GazeSample in")->capture_default_str();
   cli.add_option("--pose-endpoint", ep.pose, "CameraPose in")->capture_default_str();
@@ -93,6 +96,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--pose-socket", o.pose_socket, "sub or pull, as --gaze-socket")
       ->check(CLI::IsMember({"sub", "pull"}))
       ->capture_default_str();
+  cli.option_defaults()->group("Gaze and adaptivity");
   cli.add_option("--camera-source", sim.camera_source,
                  "viewer_id whose camera pose drives the gaze projection (default: the most recent pose)");
   // Adaptive settings override the scene's "adaptive" block (defaults shown are the library's).
@@ -112,6 +116,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--adaptive", o.adaptive,
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
                  "surface_includes_walls, gaze_*); repeatable");
+  cli.option_defaults()->group("Scene and physics");
   cli.add_option("--param", o.params,
                  "KEY=VALUE, a simulation parameter over the preset's and the scene file's (listed below); "
                  "repeatable");
@@ -119,13 +124,16 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       "Simulation parameters (--param KEY=VALUE, set_parameters; defaults by preset: sph_bench "
       "--parameter-table):\n" +
       sph::parameterHelpText() + "\n" + cli.get_footer());
-  cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
-      ->check(cli::range(0, 86400))
-      ->capture_default_str();
+  cli.option_defaults()->group("Security");
   curve::addServerOptions(cli, o.curve);
+  cli.option_defaults()->group("Network");
   cli.add_option("--max-peers", o.max_peers,
                  "connections each socket takes at a time (fewer when the descriptor limit asks)")
       ->check(cli::range(1, 100000))
+      ->capture_default_str();
+  cli.option_defaults()->group("Logging");
+  cli.add_option("--status-interval", sim.status_interval_s, "seconds between status lines (0: off)")
+      ->check(cli::range(0, 86400))
       ->capture_default_str();
   cli.add_option("--log-level", o.log_level, "trace, debug, info, warn, error")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}))

@@ -82,6 +82,18 @@ class VersionAndHelp(unittest.TestCase):
                 self.assertNotIn("->0", r.stdout)
 
 
+class ServerHelp(unittest.TestCase):
+    def test_options_come_in_groups(self):
+        r = run("sph_server", "--help")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        headings = [line for line in r.stdout.splitlines() if line.endswith(":") and not line.startswith(" ")]
+        for group in ("Scene and physics:", "Run and frames:", "Network:", "Gaze and adaptivity:", "Security:",
+                      "Logging:"):
+            self.assertIn(group, headings)
+        # The simulation parameters come from the parameter table (sph/param_table.h).
+        self.assertIn("pbf_iterations", r.stdout)
+
+
 class UsageErrors(unittest.TestCase):
     def assert_usage_error(self, program, args, *expected):
         r = run(program, *args)
