@@ -74,8 +74,9 @@ using DensityStage = void (*)(const sph::SimParams&, const sph::KernelTable&, co
 using ForceStage = void (*)(const sph::SimParams&, const sph::KernelTable&, const sph::NeighborGrid&, sph::ParticleSet&,
                             bool);
 
+// One of the thesis's pair stages over the warmed state's particles and lists.
 template <DensityStage Stage>
-void BM_Density(benchmark::State& state) {
+void BM_PairStage(benchmark::State& state) {
   const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
   omp_set_num_threads(static_cast<int>(state.range(0)));
   sph::ParticleSet particles = sim.particles();
@@ -87,22 +88,18 @@ void BM_Density(benchmark::State& state) {
   state.counters["pairs"] = static_cast<double>(sim.grid().meanNeighbors() * particles.size());
   state.counters["stride"] = static_cast<double>(sim.grid().stride());
 }
-BENCHMARK(BM_Density<sph::scalar::computeDensityPressure>)->Name("BM_Density/scalar")->Apply(stateArgs);
-BENCHMARK(BM_Density<sph::computeDensityPressure>)->Name("BM_Density/dispatched")->Apply(stateArgs);
 
+// The force stage as a pair stage: without the surface distance's hop.
 template <ForceStage Stage>
-void BM_Forces(benchmark::State& state) {
-  const sph::Simulation& sim = stateOf(state);  // first: warming sets its own thread count
-  omp_set_num_threads(static_cast<int>(state.range(0)));
-  sph::ParticleSet particles = sim.particles();
-  const sph::KernelTable kernels = sph::makeKernelTable(sim.params());
-  for (auto _ : state) {
-    Stage(sim.params(), kernels, sim.grid(), particles, false);
-    benchmark::ClobberMemory();
-  }
+void forcesOnly(const sph::SimParams& params, const sph::KernelTable& kernels, const sph::NeighborGrid& grid,
+                sph::ParticleSet& particles) {
+  Stage(params, kernels, grid, particles, false);
 }
-BENCHMARK(BM_Forces<sph::scalar::computeAccelerations>)->Name("BM_Forces/scalar")->Apply(stateArgs);
-BENCHMARK(BM_Forces<sph::computeAccelerations>)->Name("BM_Forces/dispatched")->Apply(stateArgs);
+
+BENCHMARK(BM_PairStage<sph::scalar::computeDensityPressure>)->Name("BM_Density/scalar")->Apply(stateArgs);
+BENCHMARK(BM_PairStage<sph::computeDensityPressure>)->Name("BM_Density/dispatched")->Apply(stateArgs);
+BENCHMARK(BM_PairStage<forcesOnly<sph::scalar::computeAccelerations>>)->Name("BM_Forces/scalar")->Apply(stateArgs);
+BENCHMARK(BM_PairStage<forcesOnly<sph::computeAccelerations>>)->Name("BM_Forces/dispatched")->Apply(stateArgs);
 
 void BM_FullStep(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
