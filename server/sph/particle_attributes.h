@@ -23,7 +23,7 @@ enum class SplitRule : std::uint8_t {
   kReset,    // the attribute's reset value
   kFreshId,  // the first child keeps the parent's value, the second its own fresh one (the id)
   kClass,    // the SMALL class's value (ParticleSet::setClass: size class, radius, support)
-  kMark,     // 1 for both: the adaptive step placed them (the `placed` flag)
+  kMark,     // kPlacedThisFrame for both: the adaptive step placed them (the `placed` flag)
 };
 
 // Two SMALL particles merge into one LARGE (eqs. (3.40)-(3.43)); the survivor's attribute is:
@@ -35,7 +35,7 @@ enum class MergeRule : std::uint8_t {
   kMax,      // the larger
   kReset,    // the attribute's reset value
   kClass,    // the LARGE class's value (ParticleSet::setClass)
-  kMark,     // 1: the adaptive step placed it (the `placed` flag)
+  kMark,     // kPlacedThisFrame: the adaptive step placed it (the `placed` flag)
 };
 
 struct ParticleAttributes;
@@ -73,17 +73,27 @@ struct ParticleAttributes {
   std::vector<float> surface_distance;
   std::vector<float> surface_hop;
   // dfsph: k = p / rho^2 of the constant-density and of the divergence solver in the last step,
-  // the next step's warm start (Bender & Koschier 2017, 4.3).
+  // the next step's warm start (Bender & Koschier 2017, 4.3). A solver's own state, kept in this
+  // table because the table carries it with its particle through re-sorts, splits, merges and
+  // checkpoints.
   std::vector<float> kappa;
   std::vector<float> kappa_divergence;
-  // Non-zero for a particle the adaptive step placed (a split's children, a merged particle): 1 as
-  // placed, 2 once pbf has run a frame on it; pbf marks a fresh one's neighbours 3 for that frame.
-  // Where a split or a merge puts a particle is a choice of the method, not a motion of the water:
-  // pbf lets the density constraint move a placed particle without making it faster, until the
-  // constraint holds it, and iterates longer in the frame after a placement (pbf_solver.cpp);
-  // dfsph moves fresh placements apart by position before that frame's first step
-  // (local_placement.h); after other solvers' frames Simulation::step clears it.
+  // Non-zero for a particle the adaptive step placed (a split's children, a merged particle), one of
+  // the PlacedMark values below. Where a split or a merge puts a particle is a choice of the method,
+  // not a motion of the water: pbf lets the density constraint move a placed particle without making
+  // it faster, until the constraint holds it, and iterates longer in the frame after a placement
+  // (pbf_solver.cpp); dfsph moves fresh placements apart by position before that frame's first step
+  // (local_placement.h). After each frame the solver says what becomes of the marks
+  // (FluidSolver::releasePlaced).
   std::vector<std::uint8_t> placed;
+};
+
+// The values of ParticleAttributes::placed.
+enum PlacedMark : std::uint8_t {
+  kNotPlaced = 0,
+  kPlacedThisFrame = 1,  // placed by the adaptive step after the last frame (SplitRule::kMark, MergeRule::kMark)
+  kPlacedEarlier = 2,    // pbf: placed, a frame run on it, its constraint not yet holding it
+  kNearPlacement = 3,    // pbf: a neighbour of this frame's fresh placements
 };
 
 namespace detail {

@@ -34,7 +34,7 @@ T mergedValue(MergeRule rule, const T& a, const T& b, const T& reset) {
       if constexpr (std::is_arithmetic_v<T>) return std::max(a, b);
       break;
     case MergeRule::kMark:
-      if constexpr (std::is_arithmetic_v<T>) return T(1);
+      if constexpr (std::is_arithmetic_v<T>) return T(kPlacedThisFrame);
       break;
   }
   throw std::logic_error("merge rule does not apply to this attribute's type");
@@ -94,8 +94,8 @@ void ParticleSet::splitInto(std::size_t parent, std::size_t child, const SizeCla
         break;
       case SplitRule::kMark:
         if constexpr (std::is_arithmetic_v<T>) {
-          v[parent] = T(1);
-          v[child] = T(1);
+          v[parent] = T(kPlacedThisFrame);
+          v[child] = T(kPlacedThisFrame);
           break;
         }
         throw std::logic_error(std::string("split rule kMark does not apply to ") + spec.name);

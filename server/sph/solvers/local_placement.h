@@ -26,9 +26,6 @@
 
 namespace sph {
 
-// `placed` (particle_attributes.h) of a particle the adaptive step placed after the last frame.
-inline constexpr std::uint8_t kPlacedThisFrame = 1;
-
 // pbf's constraint constants for the scene's parameters and setup (pbf_passes.h); the box and
 // the obstacles are the caller's to set for the time it moves particles at.
 PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& setup);

@@ -29,8 +29,6 @@ constexpr float kPlacedDensity = 1.01f;
 // placed the particle, then kPlacedEarlier until it is in place. Its neighbours in that frame are
 // kNearPlacement: what the constraint does to them then answers the placement too (without it the
 // unmerged neighbours of a merge kicked a resting pool).
-constexpr std::uint8_t kPlacedEarlier = 2;
-constexpr std::uint8_t kNearPlacement = 3;
 
 // Mean of rho / rho0 - 1 over the particles, where positive: what the tolerance bounds. Summed in
 // a fixed order (ordered_sum.h), so the count of iterations it decides is the same for any thread count.
