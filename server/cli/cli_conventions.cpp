@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <regex>
 #include <sstream>
 
@@ -129,29 +130,13 @@ int usageError(const CLI::App& app, const std::string& message) {
   return kExitUsage;
 }
 
-CLI::Validator range(double lo, double hi) {
-  const std::string expected = "expected a number from " + shortNumber(lo) + " to " + shortNumber(hi);
-  return CLI::Validator(
-      [lo, hi, expected](std::string& text) -> std::string {
-        double v = 0.0;
-        std::size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used == 0 || used != text.size() || !(v >= lo && v <= hi)) return expected + ", got '" + text + "'";
-        return {};
-      },
-      "NUMBER " + shortNumber(lo) + ".." + shortNumber(hi));
-}
-
 namespace {
 
-CLI::Validator above(bool or_equal) {
-  const std::string expected = std::string("expected a number ") + (or_equal ? ">= 0" : "> 0");
+// A validator of numbers: `accepts` says which; the error says so and quotes the text.
+CLI::Validator numberCheck(std::function<bool(double)> accepts, const std::string& expected,
+                           const std::string& description) {
   return CLI::Validator(
-      [or_equal, expected](std::string& text) -> std::string {
+      [accepts = std::move(accepts), expected](std::string& text) -> std::string {
         double v = 0.0;
         std::size_t used = 0;
         try {
@@ -159,19 +144,27 @@ CLI::Validator above(bool or_equal) {
         } catch (const std::exception&) {
           used = 0;
         }
-        const bool in_range = or_equal ? v >= 0.0 : v > 0.0;
-        if (used == 0 || used != text.size() || !std::isfinite(v) || !in_range) {
-          return expected + ", got '" + text + "'";
-        }
+        if (used == 0 || used != text.size() || !accepts(v)) return expected + ", got '" + text + "'";
         return {};
       },
-      or_equal ? "NUMBER >= 0" : "NUMBER > 0");
+      description);
 }
 
 }  // namespace
 
-CLI::Validator nonNegative() { return above(true); }
-CLI::Validator positive() { return above(false); }
+CLI::Validator range(double lo, double hi) {
+  return numberCheck([lo, hi](double v) { return v >= lo && v <= hi; },
+                     "expected a number from " + shortNumber(lo) + " to " + shortNumber(hi),
+                     "NUMBER " + shortNumber(lo) + ".." + shortNumber(hi));
+}
+
+CLI::Validator nonNegative() {
+  return numberCheck([](double v) { return std::isfinite(v) && v >= 0.0; }, "expected a number >= 0", "NUMBER >= 0");
+}
+
+CLI::Validator positive() {
+  return numberCheck([](double v) { return std::isfinite(v) && v > 0.0; }, "expected a number > 0", "NUMBER > 0");
+}
 
 void logToStderr() {
   // Unnamed and unregistered, like the default logger it replaces: lines read as before.
