@@ -95,7 +95,6 @@ void DfsphSolver::placeFresh(const FrameContext& frame) {
   frame.stats.placement_iterations +=
       placement_.placeFresh(frame.particles, frame.grid, LocalPlacement::Grid::kBuild, placement_constants_,
                             kPlacedCompression * constants_.rest_density, kPlacedIterations);
-  timer.stop();
 }
 
 void DfsphSolver::pressureAccelerations(const DfsphPassForms& forms, const NeighborGrid& grid, bool held) {
@@ -216,7 +215,6 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   if (frame.scene.params.dfsph_divergence_tolerance > 0.0) {
     frame.stats.divergence_iterations += solve(frame, p.kappa_divergence, false, dt);
   }
-  timer.stop();
 
   // Gravity, and in the frame's last step XSPH viscosity for the whole frame (xsphOfFrame; with
   // |n| and the surface-distance hop for the adaptive step).
@@ -230,12 +228,10 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
     velocityPassForms().smooth(v, velocity_constants_, frame.grid);
     p.velocity.swap(next_velocity_);
   }
-  timer.stop();
 
   // The constant-density solver.
   timer.start(frame.timings.density_pressure_ms);
   frame.stats.iterations += solve(frame, p.kappa, true, dt);
-  timer.stop();
 
   // Positions, kept inside (a guard), and the attributes the frames and the adaptive step read.
   timer.start(frame.timings.accel_integrate_collide_ms);
@@ -253,7 +249,6 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
     error += std::max(p.density[i] / rho0 - 1.0f, 0.0f);
   }
   frame.stats.density_error = n > 0 ? static_cast<float>(error / static_cast<double>(n)) : 0.0f;
-  timer.stop();
 }
 
 }  // namespace sph

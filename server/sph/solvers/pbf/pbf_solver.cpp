@@ -129,7 +129,6 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
                     unused_velocity);
     p.position[i] = x;
   }
-  timer.stop();
 
   timer.start(frame.timings.neighbor_ms);
   frame.grid.build(p);
