@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Plots sph_bench output (the thesis's figures 5.1-5.11): steps_per_second.png and particles.png,
 # one line per method, each method in the same colour in both plots and for both of its lines
-# (total solid, SMALL dashed). Takes a matrix (OUT_DIR/<scene>/<method>/frames.csv) or a single run
+# (total solid, SMALL dashed), and perceptual_budget.png: the share of visible particles over the
+# foveated method's perceptual budget, per frame. Takes a matrix (OUT_DIR/<scene>/<method>/frames.csv) or a single run
 # (OUT_DIR/frames.csv with summary.json beside it; the plots go into OUT_DIR). Uses gnuplot (Debian
 # gnuplot-nox, installed by scripts/install_deps.sh).
 #   usage: scripts/plot_bench.sh [OUT_DIR]   (default bench_out)
@@ -13,6 +14,7 @@ command -v gnuplot >/dev/null || { echo "plot_bench: gnuplot missing (run script
 colour_of() {  # one colour per method, the same in every figure
   case "$1" in
     regular) echo "#1b9e77" ;; surface) echo "#d95f02" ;; gaze) echo "#7570b3" ;; hybrid) echo "#e7298a" ;;
+    foveated) echo "#66a61e" ;;
     *) echo "#666666" ;;
   esac
 }
@@ -22,13 +24,15 @@ json_field() {  # json_field FILE KEY: a top-level string or number field of sum
 
 # plot DIR TITLE METHOD:CSV...: both figures into DIR.
 plot() {
-  local dir=$1 title=$2 fps_plot="" count_plot="" entry m csv c
+  local dir=$1 title=$2 fps_plot="" count_plot="" budget_plot="" entry m csv c
   shift 2
   for entry in "$@"; do
     m=${entry%%:*} csv=${entry#*:} c=$(colour_of "$m")
-    # Columns: 1 frame, 3 n_large, 4 n_small, 10 steps_per_s (see bench_output.cpp).
+    # Columns: 1 frame, 3 n_large, 4 n_small, 10 steps_per_s, 24 n_l2, 25 n_l3, 26 visible,
+    # 27 over_budget (see bench_output.cpp; files without the last four plot them as 0).
     fps_plot+="${fps_plot:+, }'$csv' using 1:10 with lines lw 1.5 lc rgb '$c' title '$m'"
-    count_plot+="${count_plot:+, }'$csv' using 1:(\$3+\$4) with lines lw 2 lc rgb '$c' title '$m total'"
+    count_plot+="${count_plot:+, }'$csv' using 1:(\$3+\$4+(valid(24)?\$24:0)+(valid(25)?\$25:0)) with lines lw 2 lc rgb '$c' title '$m total'"
+    [ "$m" = foveated ] && budget_plot+="${budget_plot:+, }'$csv' using 1:(\$26>0?100.0*\$27/\$26:0) with lines lw 1.5 lc rgb '$c' title '$m'"
     count_plot+=", '$csv' using 1:4 with lines lw 1 dt 2 lc rgb '$c' title '$m SMALL'"
   done
   gnuplot <<GNUPLOT
@@ -48,6 +52,20 @@ set ylabel 'particles'
 plot ${count_plot}
 GNUPLOT
   echo "plot_bench: ${dir}/steps_per_second.png, ${dir}/particles.png"
+  [ -n "$budget_plot" ] || return 0
+  gnuplot <<GNUPLOT
+set datafile separator ','
+set key outside right top
+set grid
+set terminal pngcairo size 1100,500 noenhanced
+set output '${dir}/perceptual_budget.png'
+set title '${title}: visible particles over the perceptual budget'
+set xlabel 'frame'
+set ylabel 'per cent of visible particles'
+set yrange [0:*]
+plot ${budget_plot}
+GNUPLOT
+  echo "plot_bench: ${dir}/perceptual_budget.png"
 }
 
 plotted=0
@@ -62,7 +80,7 @@ for scene_dir in "$out_dir"/*/; do
   [ -d "$scene_dir" ] || continue
   scene="$(basename "$scene_dir")"
   entries=()
-  for m in regular surface gaze hybrid; do
+  for m in regular surface gaze hybrid foveated; do
     [ -f "$scene_dir/$m/frames.csv" ] && entries+=("$m:$scene_dir$m/frames.csv")
   done
   [ ${#entries[@]} -gt 0 ] || continue

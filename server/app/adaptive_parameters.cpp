@@ -20,6 +20,14 @@ const std::map<std::string, double sph::AdaptiveConfig::*>& doubleFields() {
       {"gamma", &sph::AdaptiveConfig::gamma},
       {"threshold", &sph::AdaptiveConfig::threshold},
       {"surface_normal_scale", &sph::AdaptiveConfig::surface_normal_scale},
+      {"foveated_quality", &sph::AdaptiveConfig::foveated_quality},
+      {"foveated_mar_w0_deg", &sph::AdaptiveConfig::foveated_mar_w0_deg},
+      {"foveated_mar_slope", &sph::AdaptiveConfig::foveated_mar_slope},
+      {"foveated_display_fov_deg", &sph::AdaptiveConfig::foveated_display_fov_deg},
+      {"foveated_hidden_depth", &sph::AdaptiveConfig::foveated_hidden_depth},
+      {"foveated_coarsen_margin", &sph::AdaptiveConfig::foveated_coarsen_margin},
+      {"foveated_thin_fill", &sph::AdaptiveConfig::foveated_thin_fill},
+      {"foveated_thin_level", &sph::AdaptiveConfig::foveated_thin_level},
   };
   return fields;
 }

@@ -96,7 +96,7 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
   status.set_sim_time(s.sim().time());
   status.set_particle_count(static_cast<std::uint32_t>(p.size()));
   status.set_large_count(static_cast<std::uint32_t>(large));
-  status.set_small_count(static_cast<std::uint32_t>(p.size() - large));
+  status.set_small_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Small)));
   status.clear_scenes();
   try {
     for (const std::string& name : scene::listScenes(s.sceneDir())) status.add_scenes(name);

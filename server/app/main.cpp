@@ -58,8 +58,8 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.option_defaults()->group("Scene and physics");
   cli.add_option("--scene", sim.scene, "scene name in --scene-dir, or a path to a scene file")->capture_default_str();
   cli.add_option("--scene-dir", sim.scene_dir, "folder of scene files ($SPH_SCENE_DIR)")->capture_default_str();
-  cli.add_option("--method", o.method, "regular, surface, gaze or hybrid (default: the scene's method)")
-      ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
+  cli.add_option("--method", o.method, "regular, surface, gaze, hybrid or foveated (default: the scene's method)")
+      ->check(CLI::IsMember(sph::methodNames()));
   sim.preset = "pbf";
   cli.add_option("--preset", sim.preset,
                  "fluid: pbf (incompressible, position based), dfsph (divergence-free, experimental: docs/fluids.md), "

@@ -262,6 +262,13 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
   // Rebuilt here, on the thread that owns the session, so other threads can read it any time.
   const sph::ParticleSet& p = session_.sim().particles();
   const std::size_t large = p.countOf(sph::SizeClass::Large);
+  const std::size_t small = p.countOf(sph::SizeClass::Small);
+  // The foveated method's coarser levels, when there are any.
+  std::string coarser;
+  for (int k = sph::kThesisClassCount; k < sph::kSizeClassCount; ++k) {
+    const std::size_t count = p.countOf(sph::sizeLevel(k));
+    if (count > 0) coarser += fmt::format(", {} {}", count, sph::sizeClassName(sph::sizeLevel(k)));
+  }
   net::GazeArrival gaze;
   std::string gaze_text = "no gaze";
   if (mailbox_.latestGaze(gaze)) {
@@ -269,11 +276,11 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
         fmt::format("gaze age {:.0f} ms", std::chrono::duration<double, std::milli>(now - gaze.arrived).count());
   }
   std::string line = fmt::format(
-      "{} {} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small), {} subscribers, "
+      "{} {} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small{}), {} subscribers, "
       "{}, {} frames sent, {} dropped, {} inputs rejected",
       session_.scene().name, session_.preset(), sph::methodName(session_.method()), session_.sim().stepCount(),
       session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large,
-      p.size() - large, net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
+      small, coarser, net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
       counters_.frames_dropped.load(), rejections_.total());
   if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";
   std::lock_guard lock(status_mutex_);

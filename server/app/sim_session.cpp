@@ -20,6 +20,7 @@ class FedAdaptiveStep : public sph::AdaptiveStep {
     if (before_) before_(*controller_);
     controller_->apply(sim);
   }
+  sph::SizeClass coarsest() const override { return controller_->coarsest(); }
 
  private:
   std::unique_ptr<sph::AdaptiveController> controller_;
@@ -107,7 +108,10 @@ void SimSession::reset() { start(scene_, method_, config_); }
 
 bool SimSession::setMethod(sph::Method method) {
   if (method == method_) return false;
-  if (controller_ != nullptr && method != sph::Method::Regular) {
+  // Between methods of the same levels the controller switches in place; a method of other
+  // levels needs another neighbour grid (and foveated's water starts coarsest): a restart.
+  if (controller_ != nullptr && method != sph::Method::Regular &&
+      sph::coarsestClass(method) == sph::coarsestClass(method_)) {
     controller_->setMethod(method);
     method_ = method;
     return false;

@@ -86,6 +86,15 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
       {"Wall s per simulated s", [](const RunSummary& r) { return fixed(r.summary.wall_per_simulated, 2); }},
       {"Mean LARGE / SMALL",
        [](const RunSummary& r) { return fixed(r.summary.mean_large, 0) + " / " + fixed(r.summary.mean_small, 0); }},
+      {"Mean L2 / L3 (foveated)",
+       [](const RunSummary& r) { return fixed(r.summary.mean_l2, 0) + " / " + fixed(r.summary.mean_l3, 0); }},
+      {"Mean particles",
+       [](const RunSummary& r) {
+         const Summary& s = r.summary;
+         return fixed(s.mean_small + s.mean_large + s.mean_l2 + s.mean_l3, 0);
+       }},
+      {"Perceptual budget exceeded (max share of visible)",
+       [](const RunSummary& r) { return fixed(100.0 * r.summary.max_over_budget_share, 2) + " %"; }},
       {"Mean neighbours", [](const RunSummary& r) { return fixed(r.summary.mean_neighbors, 1); }},
       {"rho/rho0 mean / max",
        [](const RunSummary& r) {

@@ -115,7 +115,7 @@ class ProgressLines {
     it->second = now;
     std::fprintf(stderr, "[%s/%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n", run.scene->name.c_str(),
                  run.scene->params.preset.c_str(), run.method.c_str(), record.frame, frames, record.sim_time, mean_ms,
-                 record.n_large + record.n_small);
+                 record.n_large + record.n_small + record.n_l2 + record.n_l3);
   }
 
  private:

@@ -51,6 +51,11 @@ Summary summarize(const RunResult& run) {
   for (const FrameRecord& r : run.records) {
     s.mean_large += static_cast<double>(r.n_large) / n;
     s.mean_small += static_cast<double>(r.n_small) / n;
+    s.mean_l2 += static_cast<double>(r.n_l2) / n;
+    s.mean_l3 += static_cast<double>(r.n_l3) / n;
+    if (r.visible > 0) {
+      s.max_over_budget_share = std::max(s.max_over_budget_share, static_cast<double>(r.over_budget) / r.visible);
+    }
     s.mean_neighbors += r.mean_neighbors / n;
     s.mean_density_ratio += r.mean_density_ratio / n;
     s.max_density_ratio = std::max(s.max_density_ratio, r.max_density_ratio);
@@ -83,6 +88,9 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["wall_seconds_per_simulated_second"] = s.wall_per_simulated;
   j["mean_large"] = s.mean_large;
   j["mean_small"] = s.mean_small;
+  j["mean_l2"] = s.mean_l2;
+  j["mean_l3"] = s.mean_l3;
+  j["max_over_budget_share"] = s.max_over_budget_share;
   j["mean_neighbors_per_particle"] = s.mean_neighbors;
   j["neighbor_list_stride"] = run.neighbor_stride;
   j["mean_density_over_rho0"] = s.mean_density_ratio;
@@ -110,17 +118,19 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
   out << "frame,sim_time,n_large,n_small,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
          "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
-         "divergence_iterations,placement_iterations\n";
-  char line[512];
+         "divergence_iterations,placement_iterations,n_l2,n_l3,visible,over_budget\n";
+  char line[640];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
-    std::snprintf(line, sizeof line,
-                  "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d\n",
-                  r.frame, r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
-                  r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s, r.mean_neighbors,
-                  r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges, sph::gazeModeName(r.gaze_mode),
-                  r.merge_unpaired, r.rms_speed, r.volume, r.substeps, r.solver_iterations, r.divergence_iterations,
-                  r.placement_iterations);
+    std::snprintf(
+        line, sizeof line,
+        "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%zu,%zu,%d,"
+        "%d\n",
+        r.frame, r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
+        r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s, r.mean_neighbors,
+        r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges, sph::gazeModeName(r.gaze_mode), r.merge_unpaired,
+        r.rms_speed, r.volume, r.substeps, r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.n_l2,
+        r.n_l3, r.visible, r.over_budget);
     out << line;
   }
 }
@@ -153,19 +163,29 @@ std::string framesText(const RunResult& run) {
   return std::to_string(run.framesRun()) + " of " + std::to_string(run.frames) + " frames (INTERRUPTED)";
 }
 
+// The foveated method's coarser levels and its perceptual budget, for the run line; empty for
+// the thesis's methods.
+static std::string coarserLevels(const Summary& s) {
+  if (s.mean_l2 + s.mean_l3 <= 0.0) return {};
+  char buf[160];
+  std::snprintf(buf, sizeof buf, " L2 %.0f L3 %.0f (over budget at most %.2f %%)", s.mean_l2, s.mean_l3,
+                100.0 * s.max_over_budget_share);
+  return buf;
+}
+
 std::string summaryText(const RunResult& run, const Summary& s) {
   char buf[2048];
   std::snprintf(buf, sizeof buf,
                 "%s/%s (%s): %s, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
                 "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s, "
                 "%.2f wall s per simulated s | "
-                "LARGE %.0f SMALL %.0f | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
+                "LARGE %.0f SMALL %.0f%s | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
                 "NaN %zu, outside %zu | at the end: %s | other load: %s",
                 run.scene.c_str(), run.method.c_str(), run.preset.c_str(), framesText(run).c_str(), run.threads,
                 s.neighbor.mean, s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean,
-                s.total.p95, s.steps_per_s, s.wall_per_simulated, s.mean_large, s.mean_small, s.mean_neighbors,
-                s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values, s.outside_box,
-                describeVolume(run).c_str(), describe(run.machine_load).c_str());
+                s.total.p95, s.steps_per_s, s.wall_per_simulated, s.mean_large, s.mean_small, coarserLevels(s).c_str(),
+                s.mean_neighbors, s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values,
+                s.outside_box, describeVolume(run).c_str(), describe(run.machine_load).c_str());
   return buf;
 }
 

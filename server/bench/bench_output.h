@@ -19,7 +19,9 @@ struct Summary {
   // The steps' wall-clock seconds per simulated second (the simulation's own cost; the bench's
   // measurements between steps left out): under 1 is faster than real time.
   double wall_per_simulated = 0.0;
-  double mean_large = 0.0, mean_small = 0.0, mean_neighbors = 0.0;
+  double mean_large = 0.0, mean_small = 0.0, mean_l2 = 0.0, mean_l3 = 0.0, mean_neighbors = 0.0;
+  // foveated: the largest share of visible particles over the perceptual budget in any frame.
+  double max_over_budget_share = 0.0;
   double mean_density_ratio = 0.0, max_density_ratio = 0.0;
   std::size_t nan_values = 0, outside_box = 0;
 };

@@ -34,8 +34,7 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   const sph::ParticleSet& p = sim.particles();
   const sph::BoxState box = sim.boxNow();
   const double rho0 = sim.params().rest_density;
-  r.n_large = 0;
-  r.n_small = 0;
+  std::size_t by_level[sph::kSizeClassCount] = {};
   r.nan_values = 0;
   r.outside_box = 0;
   double density_sum = 0.0;
@@ -45,7 +44,7 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   // A particle counts as outside when its centre has left the box (a float hair of slack).
   const float slack = 1e-4f;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    (p.size_class[i] == sph::SizeClass::Large ? r.n_large : r.n_small) += 1;
+    by_level[sph::classIndex(p.size_class[i])] += 1;
     const sph::Vec3& x = p.position[i];
     const sph::Vec3& u = p.velocity[i];
     for (int a = 0; a < 3; ++a) {
@@ -60,6 +59,11 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
     speed_sq_sum += u.squaredNorm();
     volume += p.density[i] > 0.0f ? p.mass[i] / p.density[i] : 0.0;
   }
+  static_assert(sph::kSizeClassCount == 4, "a column per level");
+  r.n_small = by_level[0];
+  r.n_large = by_level[1];
+  r.n_l2 = by_level[2];
+  r.n_l3 = by_level[3];
   const double n = std::max<std::size_t>(p.size(), 1);
   r.mean_density_ratio = density_sum / n / rho0;
   r.max_density_ratio = density_max / rho0;
@@ -116,6 +120,8 @@ void SceneRun::stepFrame() {
     r.merges = controller_->lastStats().merges;
     r.merge_unpaired = controller_->lastStats().merge_wanted - 2 * r.merges;
     r.gaze_mode = controller_->lastStats().gaze_mode;
+    r.visible = controller_->lastStats().visible;
+    r.over_budget = controller_->lastStats().over_budget;
   }
   r.frame = static_cast<int>(result_.records.size()) + 1;
   r.sim_time = sim_->time();

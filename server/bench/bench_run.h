@@ -19,8 +19,10 @@ namespace bench {
 struct FrameRecord {
   int frame = 0;
   double sim_time = 0.0;
-  std::size_t n_large = 0;
-  std::size_t n_small = 0;
+  std::size_t n_large = 0;  // level 1
+  std::size_t n_small = 0;  // level 0
+  std::size_t n_l2 = 0;     // the foveated method's coarser levels
+  std::size_t n_l3 = 0;
   sph::PhaseTimings ms;
   double mean_neighbors = 0.0;
   double mean_density_ratio = 0.0;  // mean rho / rho0
@@ -37,6 +39,10 @@ struct FrameRecord {
   int merges = 0;
   int merge_unpaired = 0;  // SMALL particles flagged MERGE that found no partner
   sph::GazeMode gaze_mode = sph::GazeMode::None;
+  // foveated: the perceptual budget (adaptive/foveated.h): visible particles, and those wider than
+  // the eye allows at their eccentricity.
+  int visible = 0;
+  int over_budget = 0;
 };
 
 struct RunResult {

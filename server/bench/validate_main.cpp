@@ -219,9 +219,9 @@ int main(int argc, char** argv) {
   app.add_option("--preset", o.presets, "presets to validate (thesis, pbf, dfsph)")
       ->delimiter(',')
       ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
-  app.add_option("--method", o.methods, "methods for the dam break (regular, surface, gaze, hybrid)")
+  app.add_option("--method", o.methods, "methods for the dam break (regular, surface, gaze, hybrid, foveated)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"regular", "surface", "gaze", "hybrid"}));
+      ->check(CLI::IsMember(sph::methodNames()));
   app.add_option("--scene-dir", o.scene_dir, "folder with martin_moyce.json and hydrostatic.json")
       ->capture_default_str();
   app.add_option("--out", o.out, "output folder")->capture_default_str();

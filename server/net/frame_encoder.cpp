@@ -16,6 +16,7 @@ static_assert(sizeof(sph::Vec3) == 3 * sizeof(float), "positions must be packed 
 static_assert(sizeof(sph::SizeClass) == 1 && static_cast<int>(sph::SizeClass::Small) == 0 &&
                   static_cast<int>(sph::SizeClass::Large) == 1,
               "size_classes bytes are the SizeClass values");
+static_assert(sph::kSizeClassCount <= 16, "level_radii holds at most 16 levels (client_viewer/decoded_frame.h)");
 
 constexpr double kQuantLevels = 65535.0;
 
@@ -52,6 +53,15 @@ void encodeGeometry(const sph::Simulation& sim, gsph::v1::Geometry* g) {
   }
 }
 
+// Every level's radius, present or not, so a client can size any level byte it meets.
+void encodeLevelRadii(const sph::SimParams& params, gsph::v1::Frame& f) {
+  const auto classes = params.classes();
+  f.set_radius_small(static_cast<float>(classes[sph::classIndex(sph::SizeClass::Small)].radius));
+  f.set_radius_large(static_cast<float>(classes[sph::classIndex(sph::SizeClass::Large)].radius));
+  f.clear_level_radii();
+  for (const sph::SizeClassProps& level : classes) f.add_level_radii(static_cast<float>(level.radius));
+}
+
 }  // namespace
 
 gsph::v1::Method toProtoMethod(sph::Method m) {
@@ -64,6 +74,8 @@ gsph::v1::Method toProtoMethod(sph::Method m) {
       return gsph::v1::METHOD_GAZE;
     case sph::Method::Hybrid:
       return gsph::v1::METHOD_HYBRID;
+    case sph::Method::Foveated:
+      return gsph::v1::METHOD_FOVEATED;
   }
   return gsph::v1::METHOD_UNSPECIFIED;
 }
@@ -81,6 +93,9 @@ bool fromProtoMethod(int value, sph::Method& out) {
       return true;
     case gsph::v1::METHOD_HYBRID:
       out = sph::Method::Hybrid;
+      return true;
+    case gsph::v1::METHOD_FOVEATED:
+      out = sph::Method::Foveated;
       return true;
     default:
       return false;
@@ -111,10 +126,9 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   f.set_scene(info.scene);
   f.set_method(toProtoMethod(info.method));
   f.set_paused(info.paused);
-  const std::size_t large = p.countOf(sph::SizeClass::Large);
   f.set_particle_count(static_cast<std::uint32_t>(p.size()));
-  f.set_large_count(static_cast<std::uint32_t>(large));
-  f.set_small_count(static_cast<std::uint32_t>(p.size() - large));
+  f.set_large_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Large)));
+  f.set_small_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Small)));
 
   const sph::PhaseTimings& t = sim.lastTimings();
   gsph::v1::PhaseTimings* pt = f.mutable_timings();
@@ -142,9 +156,7 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
     f.clear_camera();
   }
   encodeGeometry(sim, f.mutable_geometry());
-  const auto classes = sim.params().classes();
-  f.set_radius_small(static_cast<float>(classes[sph::classIndex(sph::SizeClass::Small)].radius));
-  f.set_radius_large(static_cast<float>(classes[sph::classIndex(sph::SizeClass::Large)].radius));
+  encodeLevelRadii(sim.params(), f);
 
   encodePositions(sim);
   std::string* sizes = f.mutable_size_classes();

@@ -157,6 +157,14 @@ void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
       {"gaze_ring_radius", &c.gaze_ring_radius},
       {"gaze_stale_s", &c.gaze_stale_s},
       {"gaze_hold_s", &c.gaze_hold_s},
+      {"foveated_quality", &c.foveated_quality},
+      {"foveated_mar_w0_deg", &c.foveated_mar_w0_deg},
+      {"foveated_mar_slope", &c.foveated_mar_slope},
+      {"foveated_display_fov_deg", &c.foveated_display_fov_deg},
+      {"foveated_hidden_depth", &c.foveated_hidden_depth},
+      {"foveated_coarsen_margin", &c.foveated_coarsen_margin},
+      {"foveated_thin_fill", &c.foveated_thin_fill},
+      {"foveated_thin_level", &c.foveated_thin_level},
   };
   std::set<std::string> allowed = {"surface_includes_walls"};
   for (const auto& [name, field] : numbers) allowed.insert(name);

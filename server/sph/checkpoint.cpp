@@ -200,7 +200,7 @@ CheckpointInfo loadCheckpoint(Simulation& sim, const std::string& method, const 
   if (!in.atEnd()) in.fail("unexpected bytes after the last attribute");
   const auto classes = sim.params().classes();
   for (std::size_t i = 0; i < restored.size(); ++i) {
-    if (restored.size_class[i] != SizeClass::Small && restored.size_class[i] != SizeClass::Large) {
+    if (classIndex(restored.size_class[i]) >= kSizeClassCount) {
       in.fail("particle " + std::to_string(i) + " has an unknown size class");
     }
     if (restored.id[i] >= next_id) in.fail("particle id " + std::to_string(restored.id[i]) + " beyond the id counter");

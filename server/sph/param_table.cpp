@@ -219,10 +219,16 @@ void SimParams::validate() const {
   if (mass_large != 2.0 * mass_small) throw std::invalid_argument("parameter 'mass_large' must be twice 'mass_small'");
   // The pair passes tell a neighbour's class, so its kernel and mass, by its support.
   const auto props = classes();
-  if (static_cast<float>(props[0].support) == static_cast<float>(props[1].support)) {
+  bool supports_differ = true;
+  for (std::size_t a = 0; a < props.size(); ++a) {
+    for (std::size_t b = a + 1; b < props.size(); ++b) {
+      supports_differ = supports_differ && static_cast<float>(props[a].support) != static_cast<float>(props[b].support);
+    }
+  }
+  if (!supports_differ) {
     throw std::invalid_argument(
         "parameters 'kernel_particles_small' and 'kernel_particles_large' give both classes "
-        "one support: the classes must differ in it");
+        "one support: the classes (and the coarser levels) must differ in it");
   }
 }
 

@@ -6,7 +6,11 @@
 
 namespace sph {
 
-const char* sizeClassName(SizeClass c) { return c == SizeClass::Small ? "SMALL" : "LARGE"; }
+const char* sizeClassName(SizeClass c) {
+  static const char* const kNames[kSizeClassCount] = {"SMALL", "LARGE", "L2", "L3"};
+  const int k = classIndex(c);
+  return k >= 0 && k < kSizeClassCount ? kNames[k] : "unknown";
+}
 
 namespace {
 
@@ -23,8 +27,13 @@ SizeClassProps deriveClass(double mass, double kernel_particles, double rho0) {
 }  // namespace
 
 std::array<SizeClassProps, kSizeClassCount> SimParams::classes() const {
-  return {deriveClass(mass_small, kernel_particles_small, rest_density),
-          deriveClass(mass_large, kernel_particles_large, rest_density)};
+  std::array<SizeClassProps, kSizeClassCount> levels;
+  levels[0] = deriveClass(mass_small, kernel_particles_small, rest_density);
+  for (int k = 1; k < kSizeClassCount; ++k) {
+    levels[static_cast<std::size_t>(k)] =
+        deriveClass(std::ldexp(mass_large, k - 1), kernel_particles_large, rest_density);
+  }
+  return levels;
 }
 
 double SimParams::surfaceThreshold() const { return std::sqrt(rest_density / kernel_particles_large); }

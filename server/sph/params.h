@@ -12,10 +12,19 @@
 
 namespace sph {
 
+// A particle's size level. The thesis's two classes are the first two: SMALL (level 0, mass m) and
+// LARGE (level 1, 2 m). The foveated method (adaptive/foveated.h) uses coarser levels as well:
+// level k has mass 2^k m, so a split halves a particle into two of the level below and a merge
+// joins two of one level into one of the level above, exactly as (3.37)-(3.43) do for the two
+// classes, and mass stays exact through any number of changes.
 enum class SizeClass : std::uint8_t { Small = 0, Large = 1 };
-inline constexpr int kSizeClassCount = 2;
+inline constexpr int kSizeClassCount = 4;
+// The thesis's methods use the first two levels only.
+inline constexpr int kThesisClassCount = 2;
 
 inline int classIndex(SizeClass c) { return static_cast<int>(c); }
+inline SizeClass sizeLevel(int level) { return static_cast<SizeClass>(level); }
+// "SMALL", "LARGE", then "L2", "L3".
 const char* sizeClassName(SizeClass c);
 
 // Per size class: what table 3.2 gives (mass, kernel particles x) and what follows from it.
@@ -69,6 +78,8 @@ struct SimParams {
   int dfsph_max_iterations = 100;
   bool dfsph_conjugate_gradients = false;
 
+  // Every level's properties: level 0 and 1 from table 3.2; level k >= 2 has mass 2^(k-1)
+  // mass_large and LARGE's kernel particles (the support grows with the particle).
   std::array<SizeClassProps, kSizeClassCount> classes() const;
   double surfaceThreshold() const;  // l, eq. (3.36)
   // Throws std::invalid_argument naming the offending key when a value is out of its range

@@ -22,7 +22,7 @@ enum class SplitRule : std::uint8_t {
   kHalve,    // half the parent's value: an extensive quantity (mass, eq. (3.38); volume)
   kReset,    // the attribute's reset value
   kFreshId,  // the first child keeps the parent's value, the second its own fresh one (the id)
-  kClass,    // the SMALL class's value (ParticleSet::setClass: size class, radius, support)
+  kClass,    // the level below the parent's (SMALL for LARGE; ParticleSet::setClass: size class, radius, support)
   kMark,     // kPlacedThisFrame for both: the adaptive step placed them (the `placed` flag)
 };
 
@@ -34,7 +34,7 @@ enum class MergeRule : std::uint8_t {
   kMin,      // the smaller (a distance: the nearer of the two is the merged particle's)
   kMax,      // the larger
   kReset,    // the attribute's reset value
-  kClass,    // the LARGE class's value (ParticleSet::setClass)
+  kClass,    // the level above the two's (LARGE for SMALL; ParticleSet::setClass)
   kMark,     // kPlacedThisFrame: the adaptive step placed it (the `placed` flag)
 };
 

@@ -74,7 +74,8 @@ void ParticleSet::setClass(std::size_t i, SizeClass c, const SizeClassProps& pro
   support[i] = static_cast<float>(props.support);
 }
 
-void ParticleSet::splitInto(std::size_t parent, std::size_t child, const SizeClassProps& small) {
+void ParticleSet::splitInto(std::size_t parent, std::size_t child, SizeClass child_level,
+                            const SizeClassProps& child_props) {
   forEachAttributeSpec([&](auto& v, const auto& spec) {
     using T = typename std::remove_cvref_t<decltype(spec)>::Value;
     switch (spec.split) {
@@ -104,15 +105,16 @@ void ParticleSet::splitInto(std::size_t parent, std::size_t child, const SizeCla
         break;
     }
   });
-  setClass(parent, SizeClass::Small, small);
-  setClass(child, SizeClass::Small, small);
+  setClass(parent, child_level, child_props);
+  setClass(child, child_level, child_props);
 }
 
-void ParticleSet::mergeInto(std::size_t survivor, std::size_t absorbed, const SizeClassProps& large) {
+void ParticleSet::mergeInto(std::size_t survivor, std::size_t absorbed, SizeClass merged_level,
+                            const SizeClassProps& merged_props) {
   forEachAttributeSpec([&](auto& v, const auto& spec) {
     v[survivor] = mergedValue(spec.merge, v[survivor], v[absorbed], spec.reset_value);
   });
-  setClass(survivor, SizeClass::Large, large);
+  setClass(survivor, merged_level, merged_props);
 }
 
 void ParticleSet::clear() {

@@ -39,12 +39,15 @@ class ParticleSet : public ParticleAttributes {
   std::size_t appendReset(std::size_t n);
 
   // Split: `parent` and `child` (appended by appendReset) become the two children, every
-  // attribute by its SplitRule; then both take the SMALL class from `small` (setClass). The
-  // caller places them (positions start as the parent's).
-  void splitInto(std::size_t parent, std::size_t child, const SizeClassProps& small);
+  // attribute by its SplitRule; then both take the level below the parent's, `child_level` with
+  // `child_props` (setClass; SMALL for the thesis's LARGE). The caller places them (positions
+  // start as the parent's).
+  void splitInto(std::size_t parent, std::size_t child, SizeClass child_level, const SizeClassProps& child_props);
   // Merge: `survivor` becomes the merged particle, every attribute by its MergeRule from the
-  // two, and takes the LARGE class from `large`. The caller removes `absorbed` afterwards.
-  void mergeInto(std::size_t survivor, std::size_t absorbed, const SizeClassProps& large);
+  // two, and takes the level above theirs, `merged_level` with `merged_props` (LARGE for two of the
+  // thesis's SMALL). The caller removes `absorbed` afterwards.
+  void mergeInto(std::size_t survivor, std::size_t absorbed, SizeClass merged_level,
+                 const SizeClassProps& merged_props);
   // The class-derived attributes (SplitRule::kClass / MergeRule::kClass): size class, radius, support.
   void setClass(std::size_t i, SizeClass c, const SizeClassProps& props);
 
@@ -57,8 +60,8 @@ class ParticleSet : public ParticleAttributes {
   // periodic re-sort restores locality). Deterministic for a given input.
   void swapRemove(std::span<const std::uint8_t> keep);
 
-  // Sum of masses in double precision (exact for the two-class masses of the presets up to rounding
-  // of the float attributes themselves; tests compare against class counts).
+  // Sum of masses in double precision (exact for the levels' masses of the presets up to rounding
+  // of the float attributes themselves; tests compare against level counts).
   double totalMass() const;
   std::size_t countOf(SizeClass c) const;
 

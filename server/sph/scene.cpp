@@ -18,7 +18,7 @@ Scene gatedScene(const Scene& scene) {
 
 int initialParticleCount(const Scene& scene, SizeClass start_class) {
   if (start_class == SizeClass::Large) return scene.large_particles;
-  const double ratio = scene.params.mass_large / scene.params.mass_small;
+  const double ratio = scene.params.mass_large / scene.params.classes()[classIndex(start_class)].mass;
   return static_cast<int>(std::lround(scene.large_particles * ratio));
 }
 

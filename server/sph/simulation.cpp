@@ -1,6 +1,8 @@
 #include "sph/simulation.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "sph/fill_water.h"
 #include "sph/phase_timer.h"
@@ -13,21 +15,28 @@ Simulation::Simulation(const Scene& scene, SizeClass start_class, std::size_t ca
   scene_.params.validate();
   solver_ = makeFluidSolver(scene_);
   fillWater(scene_, start_class, *solver_, particles_);
-  configureGrid(false);
+  configureGrid();
   solver_->settleFreshWater({scene_, particles_, grid_, 0.0, scene_.params.time_step, false, timings_, solver_stats_});
   timings_ = PhaseTimings{};
 }
 
-void Simulation::configureGrid(bool both_classes) {
+void Simulation::configureGrid() {
   const auto classes = scene_.params.classes();
-  const double support =
-      both_classes ? std::max(classes[0].support, classes[1].support) : classes[classIndex(start_class_)].support;
+  double support = classes[classIndex(start_class_)].support;
+  if (adaptive_ != nullptr) {
+    for (int k = 0; k <= classIndex(adaptive_->coarsest()); ++k) support = std::max(support, classes[k].support);
+  }
   grid_.configure(scene_.boundary.enclosingBox(), static_cast<float>(support), particles_.capacity());
 }
 
 void Simulation::setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) {
+  if (step != nullptr && classIndex(step->coarsest()) >= solver_->sizeLevels()) {
+    throw std::invalid_argument("the '" + scene_.params.solver + "' solver handles " +
+                                std::to_string(solver_->sizeLevels()) +
+                                " size levels; this method needs more (use the pbf or dfsph preset)");
+  }
   adaptive_ = std::move(step);
-  configureGrid(adaptive_ != nullptr);
+  configureGrid();
 }
 
 void Simulation::restore(ParticleSet&& particles, std::int64_t steps, bool surface_distance_tracking) {

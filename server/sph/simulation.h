@@ -22,6 +22,9 @@ class AdaptiveStep {
  public:
   virtual ~AdaptiveStep() = default;
   virtual void apply(Simulation& sim) = 0;
+  // The coarsest level the step makes (the thesis's methods: LARGE); the neighbour grid's cells
+  // fit its support.
+  virtual SizeClass coarsest() const { return SizeClass::Large; }
 };
 
 class Simulation {
@@ -30,7 +33,7 @@ class Simulation {
   Simulation(const Scene& scene, SizeClass start_class, std::size_t capacity = ParticleSet::kDefaultCapacity);
 
   // Without an adaptive step only the start class exists, and the neighbour grid's cells fit its
-  // support; with one, both classes' (the larger).
+  // support; with one, the largest support of the levels it makes (AdaptiveStep::coarsest).
   void setAdaptiveStep(std::unique_ptr<AdaptiveStep> step);
   // The surface criterion's distance field advances one neighbour hop per step inside the force
   // loop (see computeAccelerations); adaptive steps that use it switch it on.
@@ -57,7 +60,7 @@ class Simulation {
   void rebuildNeighbors() { grid_.build(particles_); }
 
  private:
-  void configureGrid(bool both_classes);
+  void configureGrid();
 
   Scene scene_;
   ParticleSet particles_;

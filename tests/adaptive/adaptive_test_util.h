@@ -32,14 +32,16 @@ inline sph::Scene poolScene(double width, double length, int large) {
 
 inline sph::ScreenCamera cameraOf(const sph::Scene& scene) { return sph::cameraFromSpec(scene.camera); }
 
-// Total mass must equal m_LARGE N_LARGE + m_SMALL N_SMALL exactly (the float masses are exact
+// Total mass must equal the sum over the levels of m_k N_k exactly (the float masses are exact
 // binary multiples, and the double sum of up to 20,000 of them is exact).
 inline void expectMassByClass(const sph::Simulation& sim, double initial_mass) {
   const sph::ParticleSet& p = sim.particles();
-  const double expected = static_cast<double>(static_cast<float>(sim.params().mass_large)) *
-                              static_cast<double>(p.countOf(sph::SizeClass::Large)) +
-                          static_cast<double>(static_cast<float>(sim.params().mass_small)) *
-                              static_cast<double>(p.countOf(sph::SizeClass::Small));
+  const auto levels = sim.params().classes();
+  double expected = 0.0;
+  for (int k = 0; k < sph::kSizeClassCount; ++k) {
+    expected +=
+        static_cast<double>(static_cast<float>(levels[k].mass)) * static_cast<double>(p.countOf(sph::sizeLevel(k)));
+  }
   EXPECT_EQ(p.totalMass(), expected);
   EXPECT_EQ(p.totalMass(), initial_mass);
 }

@@ -81,7 +81,7 @@ TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
   std::vector<std::int8_t> decision(n, sph::kMerge);
   std::vector<std::int32_t> partner(n, -1);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(p, sim.grid(), decision, partner, partner_scratch);
+  sph::choosePartners(p, sim.grid(), decision, partner, sph::SizeClass::Large, partner_scratch);
   // Every particle is in at most one mutual pair.
   std::vector<int> pair_count(n, 0);
   int pairs = 0;
@@ -115,7 +115,7 @@ TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
   std::vector<std::int8_t> merge_all(n, sph::kMerge);
   std::vector<std::int32_t> partner(n, 0);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(p, sim.grid(), merge_all, partner, partner_scratch);
+  sph::choosePartners(p, sim.grid(), merge_all, partner, sph::SizeClass::Large, partner_scratch);
   for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(partner[i], -1);
 
   std::vector<std::int8_t> split_all(n, sph::kSplit);
@@ -222,7 +222,7 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   std::vector<std::int8_t> merge_all(m, sph::kMerge);
   std::vector<std::int32_t> partner(m, -1);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(sim.particles(), sim.grid(), merge_all, partner, partner_scratch);
+  sph::choosePartners(sim.particles(), sim.grid(), merge_all, partner, sph::SizeClass::Large, partner_scratch);
   const auto counts = sph::applySplitMerge(sim, merge_all, partner, keep, slots);
   ASSERT_GT(counts.merges, static_cast<int>(m / 4));
   sim.step();
@@ -269,8 +269,8 @@ TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
     for (std::size_t i = 0; i < n; i += 5) decision[i] = sph::kRemain;
     std::vector<std::int32_t> vector_choice(n, 7), scalar_choice(n, 7);
     sph::PartnerScratch scratch;
-    sph::avx512::choosePartners(p, sim.grid(), decision, vector_choice, scratch);
-    sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, scratch);
+    sph::avx512::choosePartners(p, sim.grid(), decision, vector_choice, sph::SizeClass::Large, scratch);
+    sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, sph::SizeClass::Large, scratch);
     EXPECT_EQ(vector_choice, scalar_choice) << "round " << round;
     std::size_t paired = 0;
     for (std::int32_t c : scalar_choice) paired += c >= 0;
@@ -324,11 +324,11 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   decision[a] = decision[b] = decision[c] = sph::kMerge;
   std::vector<std::int32_t> partner(n, 0);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(p, sim.grid(), decision, partner, partner_scratch);
+  sph::choosePartners(p, sim.grid(), decision, partner, sph::SizeClass::Large, partner_scratch);
   ASSERT_EQ(partner[a], -1) << "no merging neighbour within reach";
   ASSERT_EQ(partner[b], -1);
   sph::StragglerScratch scratch;
-  sph::pairStragglers(p, decision, partner, 2.0f * h, scratch);
+  sph::pairStragglers(p, decision, partner, 2.0f, sph::SizeClass::Large, scratch);
   EXPECT_EQ(partner[a], static_cast<std::int32_t>(b));
   EXPECT_EQ(partner[b], static_cast<std::int32_t>(a));
   EXPECT_EQ(partner[c], -1) << "too far from every other straggler";
@@ -356,7 +356,9 @@ TEST(SplitMerge, StragglerSweepPairsAsTheQuadraticSearch) {
     p.add(x, sph::Vec3::Zero(), sph::SizeClass::Small, small);
   }
   const std::size_t n = p.size();
-  const float max_distance = 1.2f * spacing;
+  // The reach is in support radii: 1.2 spacings.
+  const float reach = 1.2f * spacing / p.support[0];
+  const float max_distance = reach * p.support[0];
   std::vector<std::int8_t> decision(n, sph::kMerge);
   for (std::size_t i = 0; i < n; i += 9) decision[i] = sph::kRemain;
 
@@ -389,7 +391,7 @@ TEST(SplitMerge, StragglerSweepPairsAsTheQuadraticSearch) {
 
   std::vector<std::int32_t> partner(n, -1);
   sph::StragglerScratch scratch;
-  sph::pairStragglers(p, decision, partner, max_distance, scratch);
+  sph::pairStragglers(p, decision, partner, reach, sph::SizeClass::Large, scratch);
   EXPECT_EQ(partner, expected);
 }
 

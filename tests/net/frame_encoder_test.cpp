@@ -1,9 +1,10 @@
-// The frame encoder against the simulation's own arrays: both position encodings, size classes,
-// counts, geometry, and reuse of one Frame object across frames of different sizes.
+// The frame encoder against the simulation's own arrays: both position encodings, size levels and
+// their radii, counts, geometry, and reuse of one Frame object across frames of different sizes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "net/frame_encoder.h"
 #include "scene/scene_loader.h"
@@ -44,6 +45,36 @@ TEST(FrameEncoder, Float32PositionsAreTheParticlePositionsExactly) {
   }
   ASSERT_EQ(f.size_classes().size(), p.size());
   EXPECT_FLOAT_EQ(f.geometry().box().max().x(), 0.4f);
+}
+
+TEST(FrameEncoder, LevelRadiiAreEveryLevelsRadius) {
+  sph::Simulation sim(testScene(), sph::SizeClass::Small);
+  net::FrameEncoder encoder;
+  encoder.encode(sim, {});
+  encoder.encode(sim, {});  // a reused Frame holds the levels once
+  const gsph::v1::Frame f = roundTrip(encoder);
+  const auto classes = sim.params().classes();
+  ASSERT_EQ(f.level_radii_size(), sph::kSizeClassCount);
+  for (int level = 0; level < sph::kSizeClassCount; ++level) {
+    EXPECT_EQ(f.level_radii(level), static_cast<float>(classes[level].radius)) << level;
+  }
+  EXPECT_EQ(f.radius_small(), f.level_radii(0));
+  EXPECT_EQ(f.radius_large(), f.level_radii(1));
+}
+
+TEST(FrameEncoder, CountsAreLevelsZeroAndOneOnly) {
+  sph::Simulation sim(testScene(), sph::SizeClass::Small);
+  sph::ParticleSet& p = sim.particles();
+  ASSERT_GE(p.size(), 4u);
+  const auto classes = sim.params().classes();
+  for (int level = 1; level <= 3; ++level) p.setClass(level - 1, sph::sizeLevel(level), classes[level]);
+  net::FrameEncoder encoder;
+  encoder.encode(sim, {});
+  const gsph::v1::Frame f = roundTrip(encoder);
+  EXPECT_EQ(f.particle_count(), p.size());
+  EXPECT_EQ(f.large_count(), 1u);
+  EXPECT_EQ(f.small_count(), p.size() - 3);
+  EXPECT_EQ(f.size_classes().substr(0, 4), std::string("\x01\x02\x03\x00", 4));
 }
 
 TEST(FrameEncoder, Quantized16IsWithinOneLevelOfTheBox) {

@@ -188,7 +188,7 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
   p.surface_hop[0] = 0.25f;
   const sph::ParticleSet before = p;
   const std::size_t c = p.appendReset(1);
-  p.splitInto(0, c, small);
+  p.splitInto(0, c, SizeClass::Small, small);
 
   sph::ParticleSet& q = p;
   q.forEachAttributeSpec([&](auto& v, const auto& spec) {
@@ -238,7 +238,7 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
   p.normal_length[c] = 99.0f;
   p.surface_distance[c] = 0.125f;
   const sph::ParticleSet children = p;
-  p.mergeInto(0, c, large);
+  p.mergeInto(0, c, SizeClass::Large, large);
   p.forEachAttributeSpec([&](auto& v, const auto& spec) {
     SCOPED_TRACE(spec.name);
     const auto& a = (children.*spec.member)[0];

@@ -37,6 +37,10 @@ void AdaptiveController::setConfig(const AdaptiveConfig& config) {
 
 void AdaptiveController::setMethod(Method method) {
   requireAdaptive(method);
+  if (coarsestClass(method) != coarsestClass(method_)) {
+    throw std::invalid_argument(std::string("the ") + methodName(method) +
+                                " method needs a new simulation (other levels)");
+  }
   method_ = method;
 }
 
@@ -53,6 +57,37 @@ void AdaptiveController::apply(Simulation& sim) {
   partner_.resize(n);
 
   const GazeMode mode = gazeMode();
+  stats_ = AdaptiveStats{};
+  if (method_ == Method::Foveated) {
+    // The depth field (hidden water) advances every step; without a gaze the eye is taken to
+    // rest at the screen's centre.
+    sim.setSurfaceDistanceTracking(true);
+    const bool tracked = mode == GazeMode::Tracking || mode == GazeMode::Holding;
+    const double gx = tracked ? gaze_.x : 0.5;
+    const double gy = tracked ? gaze_.y : 0.5;
+    FoveatedView view;
+    const DecisionCounts wanted = decideFoveated(sim, camera_, gx, gy, config_, false, decision_, foveated_, view);
+    finish(sim, wanted, mode);
+    // A particle more than one level coarser than its target (the new fovea after a saccade)
+    // splits again within the step, level by level, so the eye finds the finest level at once
+    // rather than a level a frame later.
+    for (int pass = 2; pass < kSizeClassCount && view.still_coarse > 0; ++pass) {
+      sim.rebuildNeighbors();
+      decision_.resize(sim.particles().size());
+      partner_.assign(sim.particles().size(), -1);
+      const DecisionCounts more = decideFoveated(sim, camera_, gx, gy, config_, true, decision_, foveated_, view);
+      stats_.split_wanted += more.split_wanted;
+      stats_.splits += applySplitMerge(sim, decision_, partner_, keep_, split_list_).splits;
+    }
+    stats_.visible = view.visible;
+    stats_.over_budget = view.over_budget;
+    return;
+  }
+  finish(sim, decideThesis(sim, mode), mode);
+}
+
+DecisionCounts AdaptiveController::decideThesis(Simulation& sim, GazeMode mode) {
+  const ParticleSet& p = sim.particles();
   const bool use_gaze = mode == GazeMode::Tracking || mode == GazeMode::Holding;
   const bool use_surface = method_ == Method::Surface || method_ == Method::Hybrid || !use_gaze;
   // The surface distance field advances one hop per step (a min per pair in the force loop, then
@@ -69,17 +104,20 @@ void AdaptiveController::apply(Simulation& sim) {
   if (use_gaze) {
     wanted = decideByGaze(p, camera_, gaze_.x, gaze_.y, config_, method_ == Method::Hybrid, decision_);
   }
+  return wanted;
+}
 
-  stats_ = AdaptiveStats{};
+void AdaptiveController::finish(Simulation& sim, const DecisionCounts& wanted, GazeMode mode) {
+  const ParticleSet& p = sim.particles();
+  const SizeClass coarsest = coarsestClass(method_);
   stats_.split_wanted = wanted.split_wanted;
   stats_.merge_wanted = wanted.merge_wanted;
   if (wanted.merge_wanted > 0) {
-    choosePartners(p, sim.grid(), decision_, partner_, partner_scratch_);
-    // Stragglers pair within two SMALL support radii: far enough to reach a sibling left behind
-    // in LARGE water, near enough that the merged particle lands inside the water between them.
-    const auto classes = sim.params().classes();
-    pairStragglers(p, decision_, partner_, 2.0f * static_cast<float>(classes[classIndex(SizeClass::Small)].support),
-                   stragglers_);
+    choosePartners(p, sim.grid(), decision_, partner_, coarsest, partner_scratch_);
+    // Stragglers pair within two of their support radii: far enough to reach a sibling left
+    // behind in coarser water, near enough that the merged particle lands inside the water
+    // between them.
+    pairStragglers(p, decision_, partner_, 2.0f, coarsest, stragglers_);
   } else {
     std::fill(partner_.begin(), partner_.end(), -1);
   }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "sph/adaptive/foveated.h"
 #include "sph/adaptive/method.h"
 #include "sph/adaptive/split_merge.h"
 #include "sph/camera.h"
@@ -21,6 +22,9 @@ struct AdaptiveStats {
   int split_wanted = 0;  // particles whose decision was SPLIT (including ones with no room)
   int merge_wanted = 0;  // particles whose decision was MERGE (including unpaired ones)
   GazeMode gaze_mode = GazeMode::None;
+  // foveated: what the eye saw (adaptive/foveated.h); zero for the thesis's methods.
+  int visible = 0;
+  int over_budget = 0;
   double gaze_x = 0.5;  // the gaze point the step used (normalized, origin top left)
   double gaze_y = 0.5;
   double gaze_age_s = 0.0;
@@ -29,7 +33,8 @@ struct AdaptiveStats {
 class AdaptiveController : public AdaptiveStep {
  public:
   // `method` must not be Method::Regular (it has no adaptive step). Throws std::invalid_argument
-  // for that, for an invalid config, and (in apply) when m_LARGE is not exactly 2 m_SMALL.
+  // for that and for an invalid config. setMethod keeps the method's levels (coarsestClass):
+  // changing them needs a new Simulation (its grid fits the coarsest level's support).
   AdaptiveController(Method method, const AdaptiveConfig& config, const ScreenCamera& camera);
 
   void setGaze(const GazeInput& gaze) { gaze_ = gaze; }
@@ -44,6 +49,7 @@ class AdaptiveController : public AdaptiveStep {
   const AdaptiveStats& lastStats() const { return stats_; }
 
   void apply(Simulation& sim) override;
+  SizeClass coarsest() const override { return coarsestClass(method_); }
 
  private:
   Method method_;
@@ -52,6 +58,10 @@ class AdaptiveController : public AdaptiveStep {
   GazeInput gaze_;
   AdaptiveStats stats_;
   GazeMode gazeMode() const;
+  // The thesis's decisions (surface, gaze, hybrid) into decision_.
+  DecisionCounts decideThesis(Simulation& sim, GazeMode mode);
+  // Partners, split and merge for decision_, and the step's stats.
+  void finish(Simulation& sim, const DecisionCounts& wanted, GazeMode mode);
 
   // Scratch, sized once to the particle capacity (no allocation inside a step after the first).
   std::vector<std::int8_t> decision_;
@@ -60,6 +70,7 @@ class AdaptiveController : public AdaptiveStep {
   std::vector<std::uint32_t> split_list_;
   PartnerScratch partner_scratch_;
   StragglerScratch stragglers_;
+  FoveatedScratch foveated_;
 };
 
 // nullptr for Method::Regular.

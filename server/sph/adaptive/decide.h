@@ -15,13 +15,17 @@ namespace sph {
 
 enum Decision : std::int8_t { kRemain = 0, kSplit = 1, kMerge = 2 };
 
-// Whether a decision acts on a particle of class c: only LARGE particles split, only SMALL ones
-// merge. Branch-free (`&`), for the scans over every particle. (The vectorised decide loops count
-// with their own arithmetic: with these, GCC 12 vectorised the gaze decision less fully.)
-inline bool wantsSplit(std::int8_t decision, SizeClass c) { return (decision == kSplit) & (c == SizeClass::Large); }
-inline bool wantsMerge(std::int8_t decision, SizeClass c) { return (decision == kMerge) & (c == SizeClass::Small); }
+// Whether a decision acts on a particle of level c: every level above SMALL splits (into two of
+// the level below), every level below `coarsest` merges (two into one of the level above); the
+// thesis's methods have coarsest LARGE, so only LARGE splits and only SMALL merges. Branch-free
+// (`&`), for the scans over every particle. (The vectorised decide loops count with their own
+// arithmetic: with these, GCC 12 vectorised the gaze decision less fully.)
+inline bool wantsSplit(std::int8_t decision, SizeClass c) { return (decision == kSplit) & (c != SizeClass::Small); }
+inline bool wantsMerge(std::int8_t decision, SizeClass c, SizeClass coarsest) {
+  return (decision == kMerge) & (classIndex(c) < classIndex(coarsest));
+}
 
-// What the decisions ask for: LARGE particles flagged SPLIT, SMALL ones flagged MERGE.
+// What the decisions ask for: particles that can split flagged SPLIT, ones that can merge MERGE.
 struct DecisionCounts {
   int split_wanted = 0;
   int merge_wanted = 0;

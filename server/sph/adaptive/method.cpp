@@ -12,10 +12,8 @@ struct MethodEntry {
   const char* name;
 };
 constexpr MethodEntry kMethods[] = {
-    {Method::Regular, "regular"},
-    {Method::Surface, "surface"},
-    {Method::Gaze, "gaze"},
-    {Method::Hybrid, "hybrid"},
+    {Method::Regular, "regular"}, {Method::Surface, "surface"},   {Method::Gaze, "gaze"},
+    {Method::Hybrid, "hybrid"},   {Method::Foveated, "foveated"},
 };
 
 void requireRange(const char* key, double v, double lo, double hi) {
@@ -50,9 +48,14 @@ std::vector<std::string> methodNames() {
   return names;
 }
 
-SizeClass startClass(Method m) { return m == Method::Regular ? SizeClass::Small : SizeClass::Large; }
+SizeClass startClass(Method m) {
+  if (m == Method::Regular) return SizeClass::Small;
+  return coarsestClass(m);
+}
 
-bool usesGaze(Method m) { return m == Method::Gaze || m == Method::Hybrid; }
+SizeClass coarsestClass(Method m) { return m == Method::Foveated ? sizeLevel(kSizeClassCount - 1) : SizeClass::Large; }
+
+bool usesGaze(Method m) { return m == Method::Gaze || m == Method::Hybrid || m == Method::Foveated; }
 
 const char* gazeModeName(GazeMode m) {
   switch (m) {
@@ -84,6 +87,17 @@ void AdaptiveConfig::validate() const {
   }
   requireRange("gaze_stale_s", gaze_stale_s, 0.0, 3600.0);
   requireRange("gaze_hold_s", gaze_hold_s, 0.0, 3600.0);
+  requireRange("foveated_quality", foveated_quality, 1.0, 1e3);
+  requireRange("foveated_mar_w0_deg", foveated_mar_w0_deg, 1e-4, 10.0);
+  requireRange("foveated_mar_slope", foveated_mar_slope, 0.0, 10.0);
+  requireRange("foveated_display_fov_deg", foveated_display_fov_deg, 0.0, 179.0);
+  requireRange("foveated_hidden_depth", foveated_hidden_depth, 0.0, 1e6);
+  requireRange("foveated_coarsen_margin", foveated_coarsen_margin, 1.0, 100.0);
+  requireRange("foveated_thin_fill", foveated_thin_fill, 0.0, 1.0);
+  requireRange("foveated_thin_level", foveated_thin_level, 0.0, kSizeClassCount - 1);
+  if (foveated_thin_level != std::floor(foveated_thin_level)) {
+    throw std::invalid_argument("adaptive setting 'foveated_thin_level' must be a whole level");
+  }
   if (gaze_hold_s < gaze_stale_s) {
     throw std::invalid_argument("adaptive setting 'gaze_hold_s' must be >= 'gaze_stale_s'");
   }

@@ -10,15 +10,20 @@
 
 namespace sph {
 
-enum class Method { Regular, Surface, Gaze, Hybrid };
+// The thesis's four methods, and `foveated` (adaptive/foveated.h): several levels, each particle
+// sized by the eye's acuity where it is seen.
+enum class Method { Regular, Surface, Gaze, Hybrid, Foveated };
 
 const char* methodName(Method m);
-// False when `name` is not one of regular, surface, gaze, hybrid.
+// False when `name` is not one of regular, surface, gaze, hybrid, foveated.
 bool methodByName(const std::string& name, Method& out);
 std::vector<std::string> methodNames();
-// Regular runs all SMALL; the adaptive methods start LARGE and split where they need detail.
+// Regular runs all SMALL; the thesis's adaptive methods start LARGE and split where they need
+// detail; foveated starts at its coarsest level.
 SizeClass startClass(Method m);
-// Gaze and hybrid refine where the eye looks, so they need a gaze source.
+// The coarsest level the method makes: LARGE for the thesis's, the last level for foveated.
+SizeClass coarsestClass(Method m);
+// Gaze, hybrid and foveated refine where the eye looks, so they need a gaze source.
 bool usesGaze(Method m);
 
 struct AdaptiveConfig {
@@ -44,6 +49,28 @@ struct AdaptiveConfig {
   // it is older than gaze_hold_s; after that the method falls back to surface-based refinement.
   double gaze_stale_s = 0.1;
   double gaze_hold_s = 1.0;
+
+  // The foveated method (adaptive/foveated.h). A particle may look q MAR(e) / MAR(0) times as
+  // wide as a finest particle at the gaze point, MAR(e) = w0 + m e the eye's minimum angle of
+  // resolution at eccentricity e (Guenter et al. 2012: w0 about 1/48 degree, m 0.022-0.028).
+  double foveated_quality = 1.0;            // q >= 1: coarser everywhere as it grows
+  double foveated_mar_w0_deg = 1.0 / 48.0;  // w0, degrees
+  double foveated_mar_slope = 0.022;        // m, degrees of MAR per degree of eccentricity
+  // How wide the display looks to the user, degrees: a desktop monitor at arm's length spans
+  // 30-50 while the camera renders 72; in a headset the two agree (0: the camera's own).
+  double foveated_display_fov_deg = 40.0;
+  // Water deeper than this many finest lattice spacings under the free surface is hidden by the
+  // water above it and may take the coarsest level at any eccentricity.
+  double foveated_hidden_depth = 4.0;
+  // Coarsening waits until the eye would allow a particle this many times the next level's
+  // width (hysteresis: a particle on a level's edge does not flicker between two levels).
+  double foveated_coarsen_margin = 1.25;
+  // A particle whose density is below this share of the rest density fills less of its support
+  // than at a flat free surface (about half): it lies in a sheet, a jet, a drop or the surge
+  // front's tip, and stays at most at `foveated_thin_level`, so thin water keeps particles across
+  // it.
+  double foveated_thin_fill = 0.4;
+  double foveated_thin_level = 1;  // a level (a whole number)
 
   // Throws std::invalid_argument naming the field when a value is not finite or out of range.
   void validate() const;

@@ -18,8 +18,9 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
   float best_d2 = std::numeric_limits<float>::infinity();
   std::uint32_t best_id = 0;
   std::int32_t best = -1;
+  const std::int32_t own = merging[i];
   for (std::uint32_t j : list) {
-    if (merging[j] == 0) continue;
+    if (merging[j] != own) continue;
     const float dx = pos[3 * i] - pos[3 * j];
     const float dy = pos[3 * i + 1] - pos[3 * j + 1];
     const float dz = pos[3 * i + 2] - pos[3 * j + 2];
@@ -40,7 +41,7 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
 namespace detail {
 
 void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p, const NeighborGrid& grid,
-                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
+                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner, SizeClass coarsest,
                         PartnerScratch& scratch) {
   const std::size_t n = p.size();
   scratch.merging.resize(n);
@@ -50,7 +51,8 @@ void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p,
   {
     const ThreadShare share = threadShare(n);
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      merging[i] = -static_cast<std::int32_t>(wantsMerge(decision[i], p.size_class[i]));
+      merging[i] = static_cast<std::int32_t>(wantsMerge(decision[i], p.size_class[i], coarsest)) *
+                   (classIndex(p.size_class[i]) + 1);
     }
 #pragma omp barrier
     // Only the flagged particles search, and they sit together: chunks even out the threads.
@@ -64,8 +66,8 @@ void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p,
 }  // namespace detail
 
 void choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, PartnerScratch& scratch) {
-  partnerSearchForms().choosePartners(p, grid, decision, partner, scratch);
+                    std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch) {
+  partnerSearchForms().choosePartners(p, grid, decision, partner, coarsest, scratch);
 }
 
 PartnerSearchForms partnerSearchForms() {
@@ -75,8 +77,8 @@ PartnerSearchForms partnerSearchForms() {
 PartnerSearchForms scalar::partnerSearchForms() { return {scalar::choosePartners}; }
 
 void scalar::choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                            std::span<std::int32_t> partner, PartnerScratch& scratch) {
-  detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, scratch);
+                            std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch) {
+  detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, coarsest, scratch);
 }
 
 }  // namespace sph

@@ -21,6 +21,7 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
   const __m512 yi = _mm512_set1_ps(pos[3 * i + 1]);
   const __m512 zi = _mm512_set1_ps(pos[3 * i + 2]);
   const __m512 inf = _mm512_set1_ps(std::numeric_limits<float>::infinity());
+  const __m512i own = _mm512_set1_epi32(merging[i]);
   __m512 best_d2 = inf;
   __m512i best_id = _mm512_set1_epi32(-1);  // as unsigned: above every id
   __m512i best_j = _mm512_set1_epi32(-1);
@@ -30,7 +31,7 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
     const __mmask16 live = lanes::liveLanes(left);
     const __m512i j = _mm512_maskz_loadu_epi32(live, list.data() + b);
     const __m512i flag = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, j, merging, 4);
-    const __mmask16 candidate = _mm512_mask_test_epi32_mask(live, flag, flag);
+    const __mmask16 candidate = _mm512_mask_cmpeq_epi32_mask(live, flag, own);
     if (candidate == 0) continue;
     const __m512i j3 = lanes::tripleIndex(j);
     const __m512 dx = _mm512_sub_ps(xi, lanes::gather(candidate, j3, pos));
@@ -62,8 +63,8 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
 }  // namespace
 
 void avx512::choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                            std::span<std::int32_t> partner, PartnerScratch& scratch) {
-  detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, scratch);
+                            std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch) {
+  detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, coarsest, scratch);
 }
 
 PartnerSearchForms avx512::partnerSearchForms() { return {avx512::choosePartners}; }

@@ -26,7 +26,7 @@ void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float rad
 Vec3 splitDirection(std::uint32_t id) { return hashedUnitVector(id); }
 
 void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
-                    float max_distance, StragglerScratch& scratch) {
+                    float reach, SizeClass coarsest, StragglerScratch& scratch) {
   // Each thread lists the stragglers of its contiguous index range at the start of that range
   // (branch-free: whether a particle is a straggler follows no pattern a predictor could learn);
   // the ranges are then closed up in thread order, so the list is in index order whatever the
@@ -42,7 +42,7 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
     std::size_t count = 0;
     for (std::size_t i = share.begin; i < share.end; ++i) {
       lonely[share.begin + count] = static_cast<std::uint32_t>(i);
-      count += (partner[i] < 0) & wantsMerge(decision[i], p.size_class[i]);
+      count += (partner[i] < 0) & wantsMerge(decision[i], p.size_class[i], coarsest);
     }
     ranges[2 * share.thread] = share.begin;
     ranges[2 * share.thread + 1] = count;
@@ -62,6 +62,9 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
   const std::size_t count = std::min(found, kMaxStragglersPerStep);
   if (count < 2) return;
   const auto x = [&](std::uint32_t a) { return p.position[lonely[a]].x(); };
+  // The sweep's bound: the farthest any straggler may look (the coarsest one's reach).
+  float max_distance = 0.0f;
+  for (std::size_t a = 0; a < count; ++a) max_distance = std::max(max_distance, reach * p.support[lonely[a]]);
 
   // Nearest other straggler of each: a sweep along x visits only the ones less than max_distance
   // away in x (the others are farther in 3D too), instead of all L^2 pairs; stragglers spread
@@ -74,12 +77,14 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
             [&](std::uint32_t a, std::uint32_t b) { return x(a) < x(b) || (x(a) == x(b) && a < b); });
   std::vector<std::int32_t>& nearest = scratch.nearest;
   nearest.assign(count, -1);
-  const float max_d2 = max_distance * max_distance;
   for (std::size_t s = 0; s < count; ++s) {
     const std::uint32_t a = by_x[s];
     const Vec3 xa = p.position[lonely[a]];
-    float best = max_d2;
+    const SizeClass level = p.size_class[lonely[a]];
+    const float own_reach = reach * p.support[lonely[a]];
+    float best = own_reach * own_reach;
     const auto consider = [&](std::uint32_t b) {
+      if (p.size_class[lonely[b]] != level) return;
       const float d2 = (xa - p.position[lonely[b]]).squaredNorm();
       if (d2 < best || (d2 == best && nearest[a] >= 0 && static_cast<std::int32_t>(b) < nearest[a])) {
         best = d2;
@@ -103,8 +108,9 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   const auto props = sim.params().classes();
-  const SizeClassProps& small = props[classIndex(SizeClass::Small)];
-  const SizeClassProps& large = props[classIndex(SizeClass::Large)];
+  const auto below = [&](std::size_t i) { return sizeLevel(classIndex(p.size_class[i]) - 1); };
+  const auto above = [&](std::size_t i) { return sizeLevel(classIndex(p.size_class[i]) + 1); };
+  const auto radiusOf = [&](SizeClass level) { return static_cast<float>(props[classIndex(level)].radius); };
   const BoxState box = sim.boxNow();
   const Boundary& boundary = sim.scene().boundary;
   SplitMergeCounts counts;
@@ -127,13 +133,11 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   if (roomiest && splits > 0 && sim.grid().neighborCounts().size() != n) sim.rebuildNeighbors();
   const std::size_t first_child = p.appendReset(splits);
   counts.splits = static_cast<int>(splits);
-  const float small_radius = static_cast<float>(small.radius);
-  const float large_radius = static_cast<float>(large.radius);
 
   // Split, eqs. (3.37)-(3.39), every attribute by its rule (particle_attributes.h); the children
   // sit at +- half the parent radius along the split axis, so the centre of mass stays put.
-  // They are then 0.78 SMALL lattice spacings apart (r = 0.62 spacings, eq. 3.7; a LARGE spacing
-  // is 1.26 SMALL ones), closer than a lattice's neighbours: the incompressible solvers then move
+  // They are then 0.78 of their own lattice spacing apart (r = 0.62 spacings, eq. 3.7; a level's
+  // spacing is 1.26 of the level below's), closer than a lattice's neighbours: the incompressible solvers then move
   // the fresh particles apart by position (local_placement.h). The roomiest axis reads the
   // neighbours' positions, so every offset is chosen before any parent moves: the first pass
   // keeps it in the child's slot (appended, so no neighbour list names it), the second places.
@@ -143,9 +147,10 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
     for (std::uint32_t slot = 0; slot < splits; ++slot) {
       const std::size_t i = splitting[slot];
       const float wanted = 0.5f * p.radius[i];
+      const float child_radius = radiusOf(below(i));
       p.position[first_child + slot] =
-          roomiest ? roomiestChildOffset(p, sim.grid(), i, box, small_radius, wanted)
-                   : childOffsetInBox(p.position[i], splitDirection(p.id[i]), box, small_radius, wanted);
+          roomiest ? roomiestChildOffset(p, sim.grid(), i, box, child_radius, wanted)
+                   : childOffsetInBox(p.position[i], splitDirection(p.id[i]), box, child_radius, wanted);
     }
 #pragma omp parallel for schedule(dynamic, 32)
     for (std::uint32_t slot = 0; slot < splits; ++slot) {
@@ -154,9 +159,10 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
       const Vec3 offset = p.position[c];
       Vec3 a = p.position[i] + offset;
       Vec3 b = p.position[i] - offset;
-      keepOutOfObstacles(boundary, box, small_radius, a);
-      keepOutOfObstacles(boundary, box, small_radius, b);
-      p.splitInto(i, c, small);
+      const SizeClass level = below(i);
+      keepOutOfObstacles(boundary, box, radiusOf(level), a);
+      keepOutOfObstacles(boundary, box, radiusOf(level), b);
+      p.splitInto(i, c, level, props[classIndex(level)]);
       p.position[i] = a;
       p.position[c] = b;
     }
@@ -175,8 +181,9 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
       continue;
     }
     const auto k = static_cast<std::size_t>(j);
-    p.mergeInto(i, k, large);
-    keepOutOfObstacles(boundary, box, large_radius, p.position[i]);
+    const SizeClass level = above(i);
+    p.mergeInto(i, k, level, props[classIndex(level)]);
+    keepOutOfObstacles(boundary, box, radiusOf(level), p.position[i]);
     keep[k] = 0;
     ++merges;
   }

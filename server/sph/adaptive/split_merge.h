@@ -1,7 +1,7 @@
 // Applying the decisions: split (3.37)-(3.39), merge (3.40)-(3.43), then the merged-away particles
-// leave the arrays (ParticleSet::swapRemove moves every attribute). Mass is conserved exactly: a
-// LARGE particle's mass is exactly twice a SMALL one's (checked when the controller is made), and
-// split and merge only ever trade one for two.
+// leave the arrays (ParticleSet::swapRemove moves every attribute). Mass is conserved exactly: each
+// level's mass is exactly twice the one below's (params.h; LARGE twice SMALL, checked when the
+// parameters are), and split and merge only ever trade one for two of the level below.
 #pragma once
 
 #include <cstdint>
@@ -21,22 +21,23 @@ struct StragglerScratch {
   std::vector<std::size_t> ranges;    // per thread: where its stragglers start, how many
 };
 
-// Stragglers: SMALL particles that want to merge but found no candidate at all within the
-// neighbour reach (partner -1), typically one child left behind in LARGE water, would stay SMALL
-// for good. Pairs them among themselves: mutual nearest within `max_distance` (ties to the lower
-// index), at most 512 per step (the lowest indices), so the result is deterministic.
+// Stragglers: particles that want to merge but found no candidate of their level at all within
+// the neighbour reach (partner -1), typically one child left behind in coarser water, would stay
+// fine for good. Pairs them among themselves, each level with its own: mutual nearest of the same
+// level within `reach` times the particle's support (ties to the lower index), at most 512 per
+// step (the lowest indices), so the result is deterministic.
 void pairStragglers(const ParticleSet& particles, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, float max_distance, StragglerScratch& scratch);
+                    std::span<std::int32_t> partner, float reach, SizeClass coarsest, StragglerScratch& scratch);
 
 struct SplitMergeCounts {
   int splits = 0;
   int merges = 0;
 };
 
-// Splits every LARGE particle flagged SPLIT into two SMALL children placed symmetrically about its
-// centre (split_axis.h: on incompressible water along the axis with the most room among its
+// Splits every particle above SMALL flagged SPLIT into two children of the level below, placed
+// symmetrically about its centre (split_axis.h: on incompressible water along the axis with the most room among its
 // neighbours, on the thesis's along a direction drawn from its id; deterministic), and merges
-// every mutual pair into a LARGE particle at the pair's midpoint with the mean velocity. Children
+// every mutual pair into one of the level above at the pair's midpoint with the mean velocity. Children
 // and merged particles stay inside the box with their radius. `keep` and `split_list` are scratch.
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
                                  std::span<const std::int32_t> partner, std::vector<std::uint8_t>& keep,

@@ -75,6 +75,9 @@ class FluidSolver {
   // radius `radius` at lattice spacing `spacing`: by default half a spacing, so that the lattice
   // tiles the region with each particle's volume.
   virtual double fillInset(double spacing, double /*radius*/) const { return 0.5 * spacing; }
+  // How many size levels (params.h) the solver's pair passes handle: every one by default (a
+  // mixed pair's kernel from the two supports, pair_kernel.inc).
+  virtual int sizeLevels() const { return kSizeClassCount; }
 };
 
 }  // namespace sph

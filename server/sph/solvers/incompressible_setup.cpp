@@ -33,7 +33,7 @@ double latticeGradSquared(const CubicKernel& k, double spacing) {
 IncompressibleSetup makeIncompressibleSetup(const Scene& scene, WallReach contact_spacings) {
   IncompressibleSetup s;
   const auto classes = scene.params.classes();
-  s.kernels = PairKernels::forClasses({classes[0].support, classes[1].support}, {classes[0].mass, classes[1].mass});
+  s.kernels = PairKernels::forClasses(classes);
   for (int c = 0; c < kSizeClassCount; ++c) {
     const auto cu = static_cast<std::size_t>(c);
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
@@ -60,6 +60,7 @@ VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next
                                 bool confinement, bool last_step, bool track_surface_distance) {
   VelocityArrays v;
   v.n = p.size();
+  v.mass = p.mass.data();
   v.support = p.support.data();
   v.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
   v.position = p.position.data()->data();

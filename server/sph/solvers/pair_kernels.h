@@ -1,7 +1,7 @@
-// The cubic kernels of the incompressible solvers' pairs: each class's own, and the one a mixed
-// SMALL-LARGE pair shares, of the mean support (h_i + h_j) / 2, where the thesis averages both
-// classes' kernels (3.35); pair_kernel.inc says why. Its support is the neighbour lists' reach,
-// eq. (3.34), so no pair is cut short.
+// The cubic kernels of the incompressible solvers' pairs: each level's own, and for a pair of two
+// levels the kernel of the mean support (h_i + h_j) / 2, where the thesis averages both classes'
+// kernels (3.35); pair_kernel.inc says why and evaluates it lane by lane. Its support is the
+// neighbour lists' reach, eq. (3.34), so no pair is cut short.
 #pragma once
 
 #include <array>
@@ -14,25 +14,22 @@ namespace sph {
 
 struct PairKernels {
   std::array<CubicKernel, kSizeClassCount> classes{};
-  CubicKernel mixed;
-  // Each class's particle mass: every particle of a class has it (split and merge keep it so), and
-  // a pair pass knows a neighbour's class from the support it reads for the mixed pairs' kernel,
-  // so it takes the neighbour's mass from here instead of gathering it (pair_kernel.inc).
+  // Each level's particle mass: every particle of a level has it (split and merge keep it so), so
+  // a pair pass among particles of one level takes the neighbour's mass from here instead of
+  // gathering it (pair_kernel.inc).
   std::array<float, kSizeClassCount> mass{};
 
   CubicKernel& operator[](std::size_t c) { return classes[c]; }
   const CubicKernel& operator[](std::size_t c) const { return classes[c]; }
 
-  // Each class's kernel of the given support and its mass, and the mixed pairs' kernel. The
-  // supports must differ: a pass tells the classes apart by them.
-  static PairKernels forClasses(const std::array<double, kSizeClassCount>& support,
-                                const std::array<double, kSizeClassCount>& mass) {
+  // Each level's kernel of its support and its mass. The supports must differ (SimParams::validate):
+  // a pass tells the levels apart by them.
+  static PairKernels forClasses(const std::array<SizeClassProps, kSizeClassCount>& levels) {
     PairKernels k;
     for (std::size_t c = 0; c < k.classes.size(); ++c) {
-      k.classes[c] = CubicKernel::forSupport(support[c]);
-      k.mass[c] = static_cast<float>(mass[c]);
+      k.classes[c] = CubicKernel::forSupport(levels[c].support);
+      k.mass[c] = static_cast<float>(levels[c].mass);
     }
-    k.mixed = CubicKernel::forSupport(0.5 * (support[0] + support[1]));
     return k;
   }
 };

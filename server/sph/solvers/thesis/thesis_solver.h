@@ -17,6 +17,8 @@ class ThesisSolver : public FluidSolver {
   // first frame shows the water's own (the first step computes them again).
   void settleFreshWater(const FrameContext& frame) override;
   double fillInset(double spacing, double radius) const override;
+  // The thesis's stages know its two classes only (SMALL and LARGE, (3.35)).
+  int sizeLevels() const override { return kThesisClassCount; }
 
  private:
   KernelTable kernels_;

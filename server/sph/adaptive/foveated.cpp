@@ -1,0 +1,167 @@
+#include "sph/adaptive/foveated.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+#include "sph/thread_share.h"
+
+namespace sph {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+// The gaze point's water: the nearest particle within this eccentricity.
+constexpr float kFoveaDeg = 1.0f;
+
+// Where the user sees a screen point: its direction from the eye, the display `tan_half` wide
+// (tan of half its horizontal angle) and `aspect` wide per high.
+Eigen::Vector3f screenDirection(float sx, float sy, float tan_half, float aspect) {
+  return {(2.0f * sx - 1.0f) * tan_half, (1.0f - 2.0f * sy) * tan_half / aspect, 1.0f};
+}
+
+float angleDeg(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  return static_cast<float>(kDegrees) * std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+}  // namespace
+
+double acuityRatio(const AdaptiveConfig& config, double e_deg) {
+  return 1.0 + config.foveated_mar_slope * std::max(e_deg, 0.0) / config.foveated_mar_w0_deg;
+}
+
+DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, double gaze_x, double gaze_y,
+                              const AdaptiveConfig& config, bool splits_only, std::span<std::int8_t> out,
+                              FoveatedScratch& scratch, FoveatedView& view) {
+  ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  const NeighborGrid& grid = sim.grid();
+  const auto levels = sim.params().classes();
+  constexpr int kCoarsest = kSizeClassCount - 1;
+  // Each level's width in finest particles.
+  float width[kSizeClassCount];
+  for (int k = 0; k < kSizeClassCount; ++k) width[k] = static_cast<float>(levels[k].radius / levels[0].radius);
+  const auto rest_density = static_cast<float>(sim.params().rest_density);
+  const Projector projector(camera);
+  const float aspect = static_cast<float>(projector.aspect());
+  const float tan_half = config.foveated_display_fov_deg > 0.0
+                             ? static_cast<float>(std::tan(0.5 * config.foveated_display_fov_deg / kDegrees))
+                             : static_cast<float>(1.0 / camera.projection(0, 0));
+  const Eigen::Vector3f gaze_dir =
+      screenDirection(static_cast<float>(gaze_x), static_cast<float>(gaze_y), tan_half, aspect);
+  const Eigen::Vector4f depth_row = -camera.view.row(2).cast<float>();  // view-space distance
+  const auto q = static_cast<float>(config.foveated_quality);
+  const auto mar_gain = static_cast<float>(config.foveated_mar_slope / config.foveated_mar_w0_deg);
+  const float hidden_depth = static_cast<float>(config.foveated_hidden_depth) *
+                             static_cast<float>(std::cbrt(levels[0].mass / sim.params().rest_density));
+  // The free surface, as the surface method finds it (3.44), |n| scaled to LARGE's support: the
+  // colour field's gradient falls as 1 / h with the particle's own kernel.
+  const auto surface_threshold = static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());
+  const auto large_support = static_cast<float>(levels[1].support);
+  const auto margin = static_cast<float>(config.foveated_coarsen_margin);
+  const auto thin_fill = static_cast<float>(config.foveated_thin_fill);
+  const int thin_level = std::clamp(static_cast<int>(config.foveated_thin_level), 0, kCoarsest);
+
+  scratch.allowed.resize(n);
+  scratch.depth.resize(n);
+  scratch.visible.resize(n);
+  scratch.finest_near.resize(n);
+  const float last_fovea = scratch.fovea_depth;
+  float fovea = std::numeric_limits<float>::infinity();  // the threads' nearest, combined
+  int split_wanted = 0, merge_wanted = 0, visible = 0, over_budget = 0, still_coarse = 0;
+#pragma omp parallel reduction(+ : split_wanted, merge_wanted, visible, over_budget, still_coarse)
+  {
+    float nearest = std::numeric_limits<float>::infinity();
+    const ThreadShare share = threadShare(n);
+    // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
+    // nearest water at the gaze point.
+    for (std::size_t i = share.begin; i < share.end; ++i) {
+      const Vec3 x = p.position[i];
+      const FastScreenDisc disc = projector.projectFast(x, p.radius[i]);
+      const float depth = depth_row.head<3>().dot(x) + depth_row.w();
+      const bool on_screen = disc.in_front && disc.x >= 0.0f && disc.x <= 1.0f && disc.y >= 0.0f && disc.y <= 1.0f;
+      const float e = disc.in_front ? angleDeg(gaze_dir, screenDirection(disc.x, disc.y, tan_half, aspect)) : 180.0f;
+      const float scaled_n = p.normal_length[i] * p.support[i] / large_support;
+      const float d = scaled_n >= surface_threshold ? 0.0f : p.surface_hop[i];
+      p.surface_distance[i] = d;
+      const bool hidden = d >= hidden_depth;
+      scratch.depth[i] = depth;
+      scratch.visible[i] = static_cast<std::int8_t>(on_screen && !hidden);
+      scratch.allowed[i] = disc.in_front ? q * (1.0f + mar_gain * e) : std::numeric_limits<float>::infinity();
+      if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
+    }
+#pragma omp critical(sph_fovea_depth)
+    fovea = std::min(fovea, nearest);
+#pragma omp barrier
+    // The water at the gaze point: this step's where the gaze falls on water, else the last
+    // step's, else this particle's own distance (every particle then as at the gaze).
+    const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
+    // The finest level within one neighbour hop (the particle itself included).
+    for (std::size_t i = share.begin; i < share.end; ++i) {
+      int finest = classIndex(p.size_class[i]);
+      for (const std::uint32_t j : grid.neighbors(i)) finest = std::min(finest, classIndex(p.size_class[j]));
+      scratch.finest_near[i] = static_cast<std::int8_t>(finest);
+    }
+#pragma omp barrier
+    // Pass 2: the targets and the decisions.
+    for (std::size_t i = share.begin; i < share.end; ++i) {
+      const int level = classIndex(p.size_class[i]);
+      const float depth = scratch.depth[i];
+      const float distance_ratio = fovea_depth > 0.0f ? std::max(depth, 0.0f) / fovea_depth : 1.0f;
+      const float allowed = scratch.allowed[i] * distance_ratio;  // in finest widths at the gaze
+      const float d = p.surface_distance[i];
+      int acuity = 0;
+      while (acuity < kCoarsest && width[acuity + 1] <= allowed) ++acuity;
+      int coarsen_ok = acuity;  // the eye allows it with the margin
+      while (coarsen_ok > 0 && width[coarsen_ok] * margin > allowed) --coarsen_ok;
+      if (d >= hidden_depth) acuity = kCoarsest;
+      if (d >= hidden_depth * margin) coarsen_ok = kCoarsest;
+      // The finest level among the neighbours, and within two hops: a merged particle sits
+      // between the two and reaches farther than either, so it must find no finer level there.
+      int finest_neighbour = kCoarsest;
+      int finest_two_hops = scratch.finest_near[i];
+      for (const std::uint32_t j : grid.neighbors(i)) {
+        finest_neighbour = std::min(finest_neighbour, classIndex(p.size_class[j]));
+        finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
+      }
+      // How full the particle's support is: its density, which every level estimates alike. A
+      // flat free surface fills about half of it; a sheet thinner than the support, a jet or a
+      // drop less. Coarsening needs the margin above the threshold.
+      const float fill = p.density[i] / rest_density;
+      const bool thin = fill < thin_fill;
+      const bool thin_after = fill < thin_fill * margin;
+      int target = std::min(acuity, finest_neighbour + 1);
+      // A merge makes level + 1: the eye must allow it with the margin, and it must stay graded
+      // (level + 1 <= the finest level within its reach + 1).
+      int coarsen_to = std::min(coarsen_ok - 1, finest_two_hops);
+      if (thin) target = std::min(target, thin_level);
+      if (thin_after) coarsen_to = std::min(coarsen_to, thin_level - 1);
+      std::int8_t decision = kRemain;
+      if (level > target) {
+        decision = kSplit;
+      } else if (!splits_only && level <= coarsen_to && level < kCoarsest && p.placed[i] == kNotPlaced) {
+        decision = kMerge;
+      }
+      out[i] = decision;
+      const int shown = level - (decision == kSplit);  // what the frame after this step shows
+      still_coarse += shown > target;
+      if (scratch.visible[i] != 0) {
+        ++visible;
+        over_budget += width[shown] > allowed;
+      }
+      split_wanted += decision == kSplit;
+      merge_wanted += decision == kMerge;
+    }
+  }
+  if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
+  view.visible = visible;
+  view.over_budget = over_budget;
+  view.still_coarse = still_coarse;
+  view.fovea_depth = scratch.fovea_depth;
+  return {split_wanted, merge_wanted};
+}
+
+}  // namespace sph

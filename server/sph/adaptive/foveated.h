@@ -1,0 +1,61 @@
+// The foveated method's decision: each particle's target level from what the eye can resolve where
+// it is seen, then SPLIT (one level finer) where a particle is coarser than its target and MERGE
+// (one level coarser, with a partner of its level) where the eye allows the next level with a
+// margin. docs/fluids.md, "Foveated water", gives the rules and why.
+//
+//   acuity   a particle may look q MAR(e) / MAR(0) times as wide, in visual angle, as a finest
+//            particle at the gaze point (Guenter et al. 2012: MAR(e) = w0 + m e); its level is the
+//            coarsest whose width, seen from its distance, stays within that. Eccentricity e is
+//            the angle between the gaze and the particle as the user sees the display (its size
+//            in the visual field is a setting), not as the camera renders it.
+//   hidden   water deeper under the free surface than a few finest spacings may be coarsest.
+//   thin     a particle with a thin neighbourhood (a sheet, a jet, a drop, the front's tip) stays
+//            at most at the thin level, so thin water keeps particles across it.
+//   graded   no particle is more than one level coarser than its finest neighbour: every pair
+//            the solvers see is of one level or two neighbouring ones (mass ratio 2, as the
+//            thesis's SMALL-LARGE pairs).
+//
+// Every particle writes only its own decision and target: the result does not depend on the
+// thread count.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "sph/adaptive/decide.h"
+#include "sph/adaptive/method.h"
+#include "sph/camera.h"
+#include "sph/simulation.h"
+
+namespace sph {
+
+// What the last decision saw, for the bench's perceptual budget and the server's status.
+struct FoveatedView {
+  int visible = 0;  // particles in front of the eye, on the display and not hidden under water
+  // Visible ones wider than q MAR(e) / MAR(0) finest particles at the gaze once this decision's
+  // splits are made.
+  int over_budget = 0;
+  int still_coarse = 0;      // particles more than one level coarser than their target
+  float fovea_depth = 0.0f;  // distance of the water at the gaze point, metres
+};
+
+// Per-particle scratch of the decision, kept between steps so the step does not allocate.
+struct FoveatedScratch {
+  std::vector<float> allowed;  // the width the eye allows, in finest particles at the gaze point
+  std::vector<float> depth;    // view-space distance
+  std::vector<std::int8_t> visible;
+  std::vector<std::int8_t> finest_near;  // the finest level among a particle and its neighbours
+  float fovea_depth = 0.0f;              // the last step's, 0 before the first
+};
+
+// Decides for every particle (out[i]) and returns the counts. `gaze_x`, `gaze_y`: normalized screen
+// coordinates (origin top left). `splits_only`: no merges (a further split pass in the same step).
+DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, double gaze_x, double gaze_y,
+                              const AdaptiveConfig& config, bool splits_only, std::span<std::int8_t> out,
+                              FoveatedScratch& scratch, FoveatedView& view);
+
+// The eye's allowance at eccentricity `e_deg`: MAR(e) / MAR(0).
+double acuityRatio(const AdaptiveConfig& config, double e_deg);
+
+}  // namespace sph

@@ -1,0 +1,250 @@
+// The foveated method (adaptive/foveated.h): more than two levels, sized by the eye's acuity, on
+// the incompressible solvers: mass exact by level through many level changes, the same result for
+// any thread count, levels that hold still under a still gaze, and a new fovea at the finest
+// level within three frames of a saccade.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "adaptive_test_util.h"
+#include "sph/adaptive/foveated.h"
+
+namespace {
+
+using adaptive_test::cameraOf;
+using adaptive_test::expectMassByClass;
+using adaptive_test::poolScene;
+
+struct Rig {
+  std::unique_ptr<sph::Simulation> sim;
+  sph::AdaptiveController* controller = nullptr;
+};
+
+Rig makeRig(const sph::Scene& scene) {
+  Rig rig;
+  rig.sim = std::make_unique<sph::Simulation>(scene, sph::startClass(sph::Method::Foveated));
+  auto controller = sph::makeAdaptiveController(sph::Method::Foveated, scene.adaptive, cameraOf(scene));
+  rig.controller = controller.get();
+  rig.sim->setAdaptiveStep(std::move(controller));
+  return rig;
+}
+
+sph::GazeInput gazeAt(double x, double y) {
+  sph::GazeInput g;
+  g.present = true;
+  g.x = x;
+  g.y = y;
+  return g;
+}
+
+// A column of water released into a wider box: it surges, so the levels meet moving water.
+sph::Scene surgeScene(const char* preset) {
+  sph::Scene scene = poolScene(0.6, 0.3, 1200);
+  EXPECT_TRUE(sph::presetByName(preset, scene.params));
+  scene.water.max = Eigen::Vector3d(0.25, 1.0, 0.3);
+  return scene;
+}
+
+// A gaze that jumps across the screen every few frames, as saccades do.
+sph::GazeInput wanderingGaze(int frame) {
+  static const double kPoints[][2] = {{0.35, 0.55}, {0.6, 0.6}, {0.45, 0.45}, {0.7, 0.5}, {0.4, 0.65}};
+  const auto& at = kPoints[(frame / 6) % 5];
+  return gazeAt(at[0], at[1]);
+}
+
+// Particles (by id: the arrays are re-sorted) whose level differs from before, or that are new.
+struct Levels {
+  std::map<std::uint32_t, sph::SizeClass> by_id;
+};
+Levels levelsOf(const sph::ParticleSet& p) {
+  Levels l;
+  for (std::size_t i = 0; i < p.size(); ++i) l.by_id[p.id[i]] = p.size_class[i];
+  return l;
+}
+int levelChanges(const Levels& before, const sph::ParticleSet& p) {
+  int changes = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto it = before.by_id.find(p.id[i]);
+    changes += it == before.by_id.end() || it->second != p.size_class[i];
+  }
+  return changes;
+}
+
+void expectHealthy(const sph::Simulation& sim) {
+  const sph::ParticleSet& p = sim.particles();
+  const sph::BoxState box = sim.boxNow();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ASSERT_TRUE(p.position[i].allFinite() && p.velocity[i].allFinite()) << "particle " << i;
+    ASSERT_TRUE((p.position[i].array() >= box.min.array() - 1e-4f).all() &&
+                (p.position[i].array() <= box.max.array() + 1e-4f).all())
+        << "particle " << i << " left the box";
+  }
+}
+
+void expectExactAndHealthy(const char* preset) {
+  Rig rig = makeRig(surgeScene(preset));
+  const double initial = rig.sim->particles().totalMass();
+  int changes = 0;
+  int levels_seen = 0;
+  for (int s = 0; s < 90; ++s) {
+    const Levels before = levelsOf(rig.sim->particles());
+    rig.controller->setGaze(wanderingGaze(s));
+    rig.sim->step();
+    changes += levelChanges(before, rig.sim->particles());
+    expectMassByClass(*rig.sim, initial);
+    expectHealthy(*rig.sim);
+    int present = 0;
+    for (int k = 0; k < sph::kSizeClassCount; ++k) present += rig.sim->particles().countOf(sph::sizeLevel(k)) > 0;
+    levels_seen = std::max(levels_seen, present);
+  }
+  EXPECT_GT(changes, 300) << "the wandering gaze should change many particles' levels";
+  EXPECT_GE(levels_seen, 3) << "at least three levels at once";
+}
+
+TEST(Foveated, MassIsExactByLevelAndWaterStaysHealthyPbf) { expectExactAndHealthy("pbf"); }
+TEST(Foveated, MassIsExactByLevelAndWaterStaysHealthyDfsph) { expectExactAndHealthy("dfsph"); }
+
+struct Snapshot {
+  std::vector<std::uint32_t> id;
+  std::vector<sph::Vec3> position;
+  std::vector<sph::Vec3> velocity;
+  std::vector<sph::SizeClass> size_class;
+};
+
+Snapshot runWithThreads(const char* preset, int threads) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  Rig rig = makeRig(surgeScene(preset));
+  for (int s = 0; s < 50; ++s) {
+    rig.controller->setGaze(wanderingGaze(s));
+    rig.sim->step();
+  }
+  omp_set_num_threads(previous);
+  const sph::ParticleSet& p = rig.sim->particles();
+  return {p.id, p.position, p.velocity, p.size_class};
+}
+
+void expectThreadIndependent(const char* preset) {
+  const Snapshot one = runWithThreads(preset, 1);
+  const Snapshot two = runWithThreads(preset, 2);
+  ASSERT_EQ(one.id, two.id);
+  ASSERT_EQ(one.size_class, two.size_class);
+  ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
+  ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
+}
+
+TEST(Foveated, ResultIndependentOfThreadCountPbf) { expectThreadIndependent("pbf"); }
+TEST(Foveated, ResultIndependentOfThreadCountDfsph) { expectThreadIndependent("dfsph"); }
+
+// A resting tank under a still gaze: once its levels have settled around the fovea they stay
+// (no particle flickers between two levels) and the tank comes to rest with its density.
+TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndComesToRest) {
+  sph::Scene scene = poolScene(0.4, 0.4, 2000);
+  ASSERT_TRUE(sph::presetByName("pbf", scene.params));
+  scene.boundary.box.max.y() = 0.6;
+  Rig rig = makeRig(scene);
+  int changes = 0;
+  constexpr int kFrames = 500;
+  for (int s = 0; s < kFrames; ++s) {
+    const Levels before = levelsOf(rig.sim->particles());
+    rig.controller->setGaze(gazeAt(0.5, 0.55));
+    rig.sim->step();
+    if (s >= kFrames - 100) changes += levelChanges(before, rig.sim->particles());
+  }
+  const sph::ParticleSet& p = rig.sim->particles();
+  const double rho0 = scene.params.rest_density;
+  double v2 = 0.0;
+  double density_error = 0.0;
+  int interior = 0;
+  int levels_present = 0;
+  for (int k = 0; k < sph::kSizeClassCount; ++k) levels_present += p.countOf(sph::sizeLevel(k)) > 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    v2 += p.velocity[i].squaredNorm();
+    // Below the free surface (its particles' support lies partly in air).
+    if (p.surface_distance[i] > 0.0f) {
+      density_error += std::abs(p.density[i] / rho0 - 1.0);
+      ++interior;
+    }
+  }
+  const double rms = std::sqrt(v2 / static_cast<double>(p.size()));
+  ASSERT_GT(interior, 0);
+  density_error /= interior;
+  std::printf(
+      "still gaze: %d levels, %d level changes in the last 100 frames, rms %.4f m/s, "
+      "mean |rho/rho0 - 1| %.4f\n",
+      levels_present, changes, rms, density_error);
+  EXPECT_GE(levels_present, 3);
+  // An occasional change as the water settles; a flickering particle changes every frame or two.
+  EXPECT_LE(changes, 30) << "levels flicker under a still gaze";
+  EXPECT_LT(rms, 0.02);
+  EXPECT_LE(density_error, 0.01);
+}
+
+// After a saccade across the water, every seen particle near the new gaze point is as fine as
+// the eye resolves there (the finest level at the gaze point itself) within three frames.
+TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
+  sph::Scene scene = surgeScene("pbf");
+  Rig rig = makeRig(scene);
+  for (int s = 0; s < 40; ++s) {
+    rig.controller->setGaze(gazeAt(0.3, 0.6));
+    rig.sim->step();
+  }
+  const double to_x = 0.62, to_y = 0.55;
+  for (int s = 0; s < 3; ++s) {
+    rig.controller->setGaze(gazeAt(to_x, to_y));
+    rig.sim->step();
+  }
+  const sph::ParticleSet& p = rig.sim->particles();
+  const sph::ScreenCamera camera = cameraOf(scene);
+  const sph::Projector projector(camera);
+  const auto levels = scene.params.classes();
+  const Eigen::Vector4d depth_row = -camera.view.row(2).transpose();
+  const double tan_half = std::tan(0.5 * scene.adaptive.foveated_display_fov_deg * M_PI / 180.0);
+  const auto direction = [&](double sx, double sy) {
+    return Eigen::Vector3d((2 * sx - 1) * tan_half, (1 - 2 * sy) * tan_half / projector.aspect(), 1);
+  };
+  const auto depthOf = [&](std::size_t i) {
+    return depth_row.head<3>().dot(p.position[i].cast<double>()) + depth_row.w();
+  };
+  const auto eccentricity = [&](const sph::ScreenDisc& d) {
+    const Eigen::Vector3d a = direction(to_x, to_y), b = direction(d.x, d.y);
+    return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
+  };
+  // The water at the gaze point: the nearest particle within a degree of it.
+  double fovea_depth = 1e30;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const sph::ScreenDisc d = projector.project(p.position[i].cast<double>(), p.radius[i]);
+    if (d.in_front && eccentricity(d) < 1.0) fovea_depth = std::min(fovea_depth, depthOf(i));
+  }
+  ASSERT_LT(fovea_depth, 1e30) << "the gaze should fall on water";
+  int near_gaze = 0, too_coarse = 0, finest_needed = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const sph::ScreenDisc d = projector.project(p.position[i].cast<double>(), p.radius[i]);
+    if (!d.in_front || p.surface_distance[i] > 0.05f) continue;  // seen: at or near the surface
+    const double e = eccentricity(d);
+    if (e > 2.0) continue;
+    // The coarsest level the eye allows there (adaptive/foveated.h), with a hair of slack for
+    // the method's single precision.
+    const double allowed = sph::acuityRatio(scene.adaptive, e) * depthOf(i) / fovea_depth;
+    int level = 0;
+    while (level + 1 < sph::kSizeClassCount && levels[level + 1].radius / levels[0].radius <= 0.98 * allowed) ++level;
+    ++near_gaze;
+    finest_needed += level == 0;
+    too_coarse += sph::classIndex(p.size_class[i]) > level;
+  }
+  std::printf("new fovea: %d seen particles within 2 degrees (%d need the finest level), %d too coarse\n", near_gaze,
+              finest_needed, too_coarse);
+  ASSERT_GT(near_gaze, 0) << "the new fovea should hold particles";
+  EXPECT_EQ(too_coarse, 0);
+}
+
+}  // namespace
