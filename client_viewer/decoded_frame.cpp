@@ -99,7 +99,67 @@ bool decodeQuantizedPositions(const gsph::v1::Frame& frame, std::size_t n, std::
   return true;
 }
 
+bool validRadius(float r) { return std::isfinite(r) && r >= 0.0f; }
+
+// The radius of every level the frame declares: level_radii, or the two thesis classes from a
+// server that predates it.
+bool decodeLevelRadii(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error) {
+  out.radius_small = frame.radius_small();
+  out.radius_large = frame.radius_large();
+  if (!validRadius(out.radius_small) || !validRadius(out.radius_large)) {
+    error = "particle radii must be finite and non-negative";
+    return false;
+  }
+  const auto& radii = frame.level_radii();
+  if (radii.empty()) {
+    out.level_radii = {out.radius_small, out.radius_large};
+    return true;
+  }
+  if (static_cast<std::size_t>(radii.size()) > kMaxSizeLevels) {
+    error = "level_radii declares " + std::to_string(radii.size()) + " size levels, at most " +
+            std::to_string(kMaxSizeLevels) + " are allowed";
+    return false;
+  }
+  out.level_radii.assign(radii.begin(), radii.end());
+  for (std::size_t level = 0; level < out.level_radii.size(); ++level) {
+    if (!validRadius(out.level_radii[level])) {
+      error = "level_radii[" + std::to_string(level) + "] must be finite and non-negative";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Counts the particles per level; a level byte the frame does not declare refuses the frame.
+bool decodeLevels(const gsph::v1::Frame& frame, bool declared, DecodedFrame& out, std::string& error) {
+  out.classes.assign(frame.size_classes().begin(), frame.size_classes().end());
+  out.level_counts.assign(out.level_radii.size(), 0);
+  for (std::uint8_t c : out.classes) {
+    if (c >= out.level_counts.size()) {
+      // Worded as before level_radii for two-class frames, so old and new viewers report alike.
+      error = declared ? "size level " + std::to_string(c) + " is beyond the " +
+                             std::to_string(out.level_counts.size()) + " levels of level_radii"
+                       : "size class " + std::to_string(c) + " is neither SMALL (0) nor LARGE (1)";
+      return false;
+    }
+    ++out.level_counts[c];
+  }
+  const auto countOf = [&](std::uint8_t level) {
+    return level < out.level_counts.size() ? out.level_counts[level] : 0u;
+  };
+  out.small_count = countOf(kClassSmall);
+  out.large_count = countOf(kClassLarge);
+  return true;
+}
+
 }  // namespace
+
+bool DecodedFrame::hasExtraLevels() const {
+  for (std::size_t level = kClassLarge + 1; level < level_counts.size(); ++level) {
+    if (level_counts[level] > 0) return true;
+  }
+  return false;
+}
 
 bool GazeOverlay::drawable() const {
   return (mode == gsph::v1::GAZE_MODE_TRACKING || mode == gsph::v1::GAZE_MODE_HOLDING) && radius > 0.0f;
@@ -127,19 +187,8 @@ bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& e
             " bytes, expected one per particle (" + std::to_string(n) + ")";
     return false;
   }
-  out.classes.assign(frame.size_classes().begin(), frame.size_classes().end());
-  out.small_count = 0;
-  out.large_count = 0;
-  for (std::uint8_t c : out.classes) {
-    if (c == kClassSmall) {
-      ++out.small_count;
-    } else if (c == kClassLarge) {
-      ++out.large_count;
-    } else {
-      error = "size class " + std::to_string(c) + " is neither SMALL (0) nor LARGE (1)";
-      return false;
-    }
-  }
+  if (!decodeLevelRadii(frame, out, error)) return false;
+  if (!decodeLevels(frame, !frame.level_radii().empty(), out, error)) return false;
   out.speeds.clear();
   if (!frame.velocities().empty()) {
     std::vector<Vec3f> velocities;
@@ -160,13 +209,6 @@ bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& e
     return false;
   }
   out.neighbor_counts.assign(counts.begin(), counts.end());
-  out.radius_small = frame.radius_small();
-  out.radius_large = frame.radius_large();
-  if (!std::isfinite(out.radius_small) || !std::isfinite(out.radius_large) || out.radius_small < 0.0f ||
-      out.radius_large < 0.0f) {
-    error = "particle radii must be finite and non-negative";
-    return false;
-  }
   if (!decodeGeometry(frame.geometry(), out.geometry, error)) return false;
 
   out.sequence = frame.sequence();

@@ -1,9 +1,10 @@
 // A Frame from the server checked and unpacked into what the renderer and the panel need: positions
-// as floats whatever the wire encoding, one class byte per particle, optional speeds. Decoding happens
-// on the network thread, so the render thread only ever uploads a finished frame.
+// as floats whatever the wire encoding, one size level byte per particle, optional speeds. Decoding
+// happens on the network thread, so the render thread only ever uploads a finished frame.
 #pragma once
 
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,8 +49,11 @@ struct GazeOverlay {
   bool drawable() const;
 };
 
+// Size levels: the thesis's two classes are levels 0 and 1; the foveated method adds coarser ones.
 inline constexpr std::uint8_t kClassSmall = 0;
 inline constexpr std::uint8_t kClassLarge = 1;
+// The most levels a frame may declare in level_radii; the shaders hold one radius per level.
+inline constexpr std::size_t kMaxSizeLevels = 16;
 
 struct DecodedFrame {
   // Wire facts
@@ -60,8 +64,8 @@ struct DecodedFrame {
   std::string scene;
   gsph::v1::Method method = gsph::v1::METHOD_UNSPECIFIED;
   bool paused = false;
-  std::uint32_t large_count = 0;
-  std::uint32_t small_count = 0;
+  std::uint32_t large_count = 0;  // level 1
+  std::uint32_t small_count = 0;  // level 0
   gsph::v1::PhaseTimings timings;
   float steps_per_second = 0.0f;
   GazeOverlay gaze;
@@ -70,11 +74,15 @@ struct DecodedFrame {
   SceneGeometry geometry;
   float radius_small = 0.0f;
   float radius_large = 0.0f;
+  // Per size level, index = level byte: the frame's level_radii, or {radius_small, radius_large}
+  // from servers that send none. level_counts has as many entries.
+  std::vector<float> level_radii;
+  std::vector<std::uint32_t> level_counts;
   gsph::v1::PositionEncoding encoding = gsph::v1::POSITION_ENCODING_UNSPECIFIED;
 
   // Per particle
   std::vector<Vec3f> positions;
-  std::vector<std::uint8_t> classes;          // kClassSmall / kClassLarge
+  std::vector<std::uint8_t> classes;          // size level, < level_radii.size()
   std::vector<float> speeds;                  // empty when the frame carries no velocities
   std::vector<std::uint8_t> neighbor_counts;  // empty when the frame carries none (server option)
 
@@ -83,11 +91,14 @@ struct DecodedFrame {
   std::size_t wire_bytes = 0;
 
   std::size_t particleCount() const { return positions.size(); }
+  // Any particle of a level beyond SMALL and LARGE (the foveated method's coarser levels).
+  bool hasExtraLevels() const;
 };
 
 // Fills `out` from `frame`. On failure returns false, sets `error` to a human-readable reason and
 // leaves `out` in an unspecified state (callers decode into a fresh object and keep their last good
-// frame). Checks: protocol version, encoding, byte lengths against particle_count, class values,
+// frame). Checks: protocol version, encoding, byte lengths against particle_count, level bytes
+// against the levels declared (level_radii, at most kMaxSizeLevels; else SMALL and LARGE only),
 // finite positions, radii and quantization box, optional per-particle fields one entry per particle.
 bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error);
 

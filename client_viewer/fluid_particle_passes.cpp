@@ -13,7 +13,6 @@ constexpr float kFar = 1.0e4f;  // glsl_common.cpp
 const char* const kVertexShader = R"(
 uniform mat4 u_view;
 uniform mat4 u_projection;
-uniform float u_radius[2];
 uniform float u_spray_max;     // neighbours <= this: spray
 uniform int u_spray;           // 1: draw the spray particles, 0: the others
 uniform float u_radius_scale;
@@ -27,7 +26,7 @@ void main() {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: the quad is culled
     return;
   }
-  float radius = u_radius[a_attrs.x > 0.5 ? 1 : 0] * u_radius_scale;
+  float radius = levelRadius() * u_radius_scale;
   vec4 centre = u_view * vec4(a_centre, 1.0);
   v_corner = a_corner;
   v_radius = radius;
@@ -106,7 +105,7 @@ void FluidParticlePasses::draw(const GlProgram& program, const ParticleBuffers& 
   glUseProgram(program.id());
   glUniformMatrix4fv(program.uniform("u_view"), 1, GL_FALSE, view.data());
   glUniformMatrix4fv(program.uniform("u_projection"), 1, GL_FALSE, projection.data());
-  glUniform1fv(program.uniform("u_radius"), 2, particles.radii());
+  particles.setRadii(program.uniform("u_radius"));
   glUniform1f(program.uniform("u_spray_max"), static_cast<float>(kSprayMaxNeighbours));
   glUniform1i(program.uniform("u_spray"), spray ? 1 : 0);
   glUniform1f(program.uniform("u_radius_scale"), spray ? kDropletRadiusScale : kSurfaceRadiusScale);

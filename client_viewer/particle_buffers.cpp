@@ -4,15 +4,20 @@
 
 namespace viewer {
 
+// The array length is kMaxSizeLevels; levels past the frame's have radius 0 and draw nothing.
 const char* const kGlslParticleAttributes = R"(
 layout(location = 0) in vec2 a_corner;
 layout(location = 1) in vec3 a_centre;
 layout(location = 2) in vec3 a_attrs;
+uniform float u_radius[16];
+int sizeLevel() { return clamp(int(a_attrs.x + 0.5), 0, 15); }
+float levelRadius() { return u_radius[sizeLevel()]; }
 )";
+static_assert(kMaxSizeLevels == 16, "kGlslParticleAttributes sizes u_radius by kMaxSizeLevels");
 
 namespace {
 constexpr float kQuad[8] = {-1, -1, 1, -1, -1, 1, 1, 1};
-constexpr int kAttributes = 3;  // class, speed, neighbours
+constexpr int kAttributes = 3;  // size level, speed, neighbours
 }  // namespace
 
 ParticleBuffers::ParticleBuffers() {
@@ -47,10 +52,12 @@ ParticleBuffers::~ParticleBuffers() {
 void ParticleBuffers::upload(const DecodedFrame& frame) {
   const std::size_t n = frame.particleCount();
   count_ = static_cast<GLsizei>(n);
-  radius_[0] = frame.radius_small;
-  radius_[1] = frame.radius_large;
-  has_class_[0] = frame.small_count > 0;
-  has_class_[1] = frame.large_count > 0;
+  radius_.fill(0.0f);
+  has_level_.fill(false);
+  for (std::size_t level = 0; level < std::min(frame.level_radii.size(), kMaxSizeLevels); ++level) {
+    radius_[level] = frame.level_radii[level];
+    has_level_[level] = level < frame.level_counts.size() && frame.level_counts[level] > 0;
+  }
   has_speed_ = !frame.speeds.empty();
   has_counts_ = !frame.neighbor_counts.empty();
   max_speed_ = 1e-3f;
@@ -73,10 +80,14 @@ void ParticleBuffers::upload(const DecodedFrame& frame) {
 
 float ParticleBuffers::largestRadius() const {
   float r = 0.0f;
-  for (int c = 0; c < 2; ++c) {
-    if (has_class_[c]) r = std::max(r, radius_[c]);
+  for (std::size_t level = 0; level < kMaxSizeLevels; ++level) {
+    if (has_level_[level]) r = std::max(r, radius_[level]);
   }
   return r;
+}
+
+void ParticleBuffers::setRadii(GLint location) const {
+  glUniform1fv(location, static_cast<GLsizei>(radius_.size()), radius_.data());
 }
 
 void ParticleBuffers::draw() const {

@@ -1,10 +1,11 @@
 // The newest frame's particles on the GPU, shared by both render modes and every pass that draws
-// them: a unit quad and, per particle (instanced), its centre and (size class, speed, neighbour
-// count). Uploaded once per frame.
+// them: a unit quad and, per particle (instanced), its centre and (size level, speed, neighbour
+// count), and the radius of every size level. Uploaded once per frame.
 #pragma once
 
 #include <epoxy/gl.h>
 
+#include <array>
 #include <vector>
 
 #include "decoded_frame.h"
@@ -15,8 +16,9 @@ namespace viewer {
 inline constexpr float kUnknownNeighbours = 255.0f;
 
 // What a vertex shader declares to read the particles: a_corner (the quad corner, -1..1),
-// a_centre (world) and a_attrs (size class 0 SMALL / 1 LARGE, speed, neighbours). No #version
-// line: put kGlslCommon (glsl_common.h) before it.
+// a_centre (world), a_attrs (size level, speed, neighbours), u_radius (metres per level, set with
+// ParticleBuffers::setRadii), sizeLevel() and levelRadius() of the particle. No #version line: put
+// kGlslCommon (glsl_common.h) before it.
 extern const char* const kGlslParticleAttributes;
 
 class ParticleBuffers {
@@ -31,8 +33,9 @@ class ParticleBuffers {
   void draw() const;
 
   GLsizei count() const { return count_; }
-  const float* radii() const { return radius_; }  // [SMALL, LARGE], metres
-  float largestRadius() const;                    // of the classes present in the frame
+  // Sets u_radius of the program in use to the frame's radius per size level.
+  void setRadii(GLint location) const;
+  float largestRadius() const;  // of the levels present in the frame
   float maxSpeed() const { return max_speed_; }
   bool hasSpeed() const { return has_speed_; }
   bool hasNeighbourCounts() const { return has_counts_; }
@@ -43,8 +46,8 @@ class ParticleBuffers {
   GLuint centre_buffer_ = 0;
   GLuint attribute_buffer_ = 0;
   GLsizei count_ = 0;
-  float radius_[2] = {0.0f, 0.0f};
-  bool has_class_[2] = {false, false};
+  std::array<float, kMaxSizeLevels> radius_{};  // metres per size level, 0 beyond the frame's
+  std::array<bool, kMaxSizeLevels> has_level_{};
   float max_speed_ = 1.0f;
   bool has_speed_ = false;
   bool has_counts_ = false;

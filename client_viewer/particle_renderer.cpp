@@ -9,8 +9,7 @@ namespace {
 const char* kVertexShader = R"(
 uniform mat4 u_view;
 uniform mat4 u_projection;
-uniform float u_radius[2];
-uniform int u_colour_mode;   // 0 class, 1 speed
+uniform int u_colour_mode;   // 0 size level, 1 speed
 uniform float u_max_speed;
 out vec2 v_corner;
 flat out vec3 v_colour;
@@ -24,9 +23,17 @@ vec3 speedColour(float t) {  // blue -> cyan -> yellow -> red
   return mix(vec3(1.0, 0.9, 0.1), vec3(0.95, 0.15, 0.1), (t - 0.66) / 0.34);
 }
 
+// SMALL blue, LARGE red; the foveated method's coarser levels green and amber, any further one grey.
+vec3 levelColour(int level) {
+  if (level == 0) return vec3(0.15, 0.38, 1.0);
+  if (level == 1) return vec3(0.92, 0.18, 0.12);
+  if (level == 2) return vec3(0.18, 0.75, 0.30);
+  if (level == 3) return vec3(0.98, 0.70, 0.10);
+  return vec3(0.6);
+}
+
 void main() {
-  int size_class = a_attrs.x > 0.5 ? 1 : 0;
-  float radius = u_radius[size_class];
+  float radius = levelRadius();
   vec4 centre = u_view * vec4(a_centre, 1.0);
   v_corner = a_corner;
   v_radius = radius;
@@ -34,7 +41,7 @@ void main() {
   if (u_colour_mode == 1) {
     v_colour = speedColour(a_attrs.y / u_max_speed);
   } else {
-    v_colour = size_class == 1 ? vec3(0.92, 0.18, 0.12) : vec3(0.15, 0.38, 1.0);
+    v_colour = levelColour(sizeLevel());
   }
   // The quad sits at the sphere's front (z + r), scaled so its outline on screen is unchanged: the
   // depth buffer then orders spheres by their nearest points, without writing gl_FragDepth (which
@@ -82,8 +89,8 @@ void ParticleRenderer::draw(const ParticleBuffers& particles, const Eigen::Matri
   glUseProgram(program_.id());
   glUniformMatrix4fv(program_.uniform("u_view"), 1, GL_FALSE, view.data());
   glUniformMatrix4fv(program_.uniform("u_projection"), 1, GL_FALSE, projection.data());
-  glUniform1fv(program_.uniform("u_radius"), 2, particles.radii());
-  // Without velocities in the frame speed colouring has nothing to show: fall back to classes.
+  particles.setRadii(program_.uniform("u_radius"));
+  // Without velocities in the frame speed colouring has nothing to show: fall back to size levels.
   glUniform1i(program_.uniform("u_colour_mode"), mode == ColourMode::kSpeed && particles.hasSpeed() ? 1 : 0);
   glUniform1f(program_.uniform("u_max_speed"), particles.maxSpeed());
   glUniform1i(program_.uniform("u_debug"), static_cast<int>(debug));

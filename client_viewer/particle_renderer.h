@@ -1,7 +1,8 @@
 // Particles mode: each particle a shaded sphere impostor, one camera-facing quad per particle
 // (instanced) placed at the sphere's front; the fragment shader discards outside the disc and shades
-// a sphere normal. Radius per class from the frame (true size on screen). Also writes the impostors'
-// normals or depths for --render-debug (render_settings.h), to compare with the fluid surface.
+// a sphere normal. Radius per size level from the frame (true size on screen), colour per level or
+// by speed. Also writes the impostors' normals or depths for --render-debug (render_settings.h), to
+// compare with the fluid surface.
 #pragma once
 
 #include <Eigen/Core>

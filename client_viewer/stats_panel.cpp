@@ -3,15 +3,45 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <iterator>
+#include <string>
 
 namespace viewer {
 
 namespace {
 
 constexpr gsph::v1::Method kMethods[] = {gsph::v1::METHOD_REGULAR, gsph::v1::METHOD_SURFACE, gsph::v1::METHOD_GAZE,
-                                         gsph::v1::METHOD_HYBRID};
+                                         gsph::v1::METHOD_HYBRID, gsph::v1::METHOD_FOVEATED};
+constexpr int kMethodCount = static_cast<int>(std::size(kMethods));
 constexpr float kMinGazeRadius = 0.005f;
 constexpr float kMaxGazeRadius = 0.5f;
+
+// "particles N: LARGE a, SMALL b", and every level's count when the foveated method's coarser
+// levels are present.
+void showParticleCounts(const DecodedFrame& frame) {
+  if (!frame.hasExtraLevels()) {
+    ImGui::Text("particles %zu: LARGE %u, SMALL %u", frame.particleCount(), frame.large_count, frame.small_count);
+    return;
+  }
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  std::string line = "particles ";
+  line += std::to_string(frame.particleCount());
+  line += ':';
+  for (std::size_t level = 0; level < frame.level_counts.size(); ++level) {
+    line += level == 0 ? " " : ", ";
+    if (level == kClassSmall) {
+      line += "SMALL";
+    } else if (level == kClassLarge) {
+      line += "LARGE";
+    } else {
+      line += 'L';
+      line += std::to_string(level);
+    }
+    line += ' ';
+    line += std::to_string(frame.level_counts[level]);
+  }
+  ImGui::TextUnformatted(line.c_str());
+}
 
 }  // namespace
 
@@ -25,6 +55,8 @@ const char* methodName(gsph::v1::Method method) {
       return "gaze";
     case gsph::v1::METHOD_HYBRID:
       return "hybrid";
+    case gsph::v1::METHOD_FOVEATED:
+      return "foveated";
     default:
       return "?";
   }
@@ -91,7 +123,7 @@ void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, cons
                 frame->paused ? "   PAUSED" : "");
     ImGui::Text("server  %.1f steps/s, step %lld, t = %.2f s", frame->steps_per_second,
                 static_cast<long long>(frame->step), frame->sim_time);
-    ImGui::Text("particles %zu: LARGE %u, SMALL %u", frame->particleCount(), frame->large_count, frame->small_count);
+    showParticleCounts(*frame);
     const auto& t = frame->timings;
     ImGui::Text("ms  neighbours %.2f  density+pressure %.2f", t.neighbor_ms(), t.density_pressure_ms());
     ImGui::Text("    accel+integrate+collide %.2f  adaptive %.2f  total %.2f", t.accel_integrate_collide_ms(),
@@ -144,14 +176,13 @@ void StatsPanel::drawControls(const DecodedFrame* frame, const std::optional<gsp
     }
   }
 
-  const char* labels[] = {"regular", "surface", "gaze", "hybrid"};
-  if (frame != nullptr) {
-    for (int i = 0; i < 4; ++i) {
-      if (kMethods[i] == frame->method) method_index_ = i;
-    }
+  const char* labels[kMethodCount];
+  for (int i = 0; i < kMethodCount; ++i) {
+    labels[i] = methodName(kMethods[i]);
+    if (frame != nullptr && kMethods[i] == frame->method) method_index_ = i;
   }
   int chosen = method_index_;
-  if (ImGui::Combo("method", &chosen, labels, 4) && chosen != method_index_ && chosen >= 0) {
+  if (ImGui::Combo("method", &chosen, labels, kMethodCount) && chosen != method_index_ && chosen >= 0) {
     gsph::v1::Control request;
     request.mutable_set_method()->set_method(kMethods[chosen]);
     client_.sendControl(std::move(request));

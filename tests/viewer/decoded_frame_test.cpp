@@ -18,6 +18,16 @@ FrameSpec threeParticles() {
   spec.particles = {{0.1f, 0.2f, 0.3f, 0}, {-0.5f, 0.25f, 0.75f, 1}, {0.9f, -0.9f, 0.0f, 1}};
   return spec;
 }
+
+FrameSpec fourLevels() {
+  FrameSpec spec;
+  spec.particles = {{0.1f, 0.1f, 0.1f, 0}, {0.2f, 0.2f, 0.2f, 1}, {0.3f, 0.3f, 0.3f, 2},
+                    {0.4f, 0.4f, 0.4f, 3}, {0.5f, 0.5f, 0.5f, 3}, {0.6f, 0.6f, 0.6f, 0}};
+  spec.radius_small = 0.01f;
+  spec.radius_large = 0.0126f;
+  spec.level_radii = {0.01f, 0.0126f, 0.0159f, 0.02f};
+  return spec;
+}
 }  // namespace
 
 TEST(DecodedFrame, FloatPositionsAndClasses) {
@@ -114,6 +124,57 @@ TEST(DecodedFrame, RejectsCountMismatchAndBadClass) {
   (*frame.mutable_size_classes())[1] = 7;
   EXPECT_FALSE(decodeFrame(frame, out, error));
   EXPECT_NE(error.find("size class 7"), std::string::npos);
+}
+
+TEST(DecodedFrame, SizeLevelsTakeTheirRadiiFromLevelRadii) {
+  DecodedFrame out;
+  std::string error;
+  ASSERT_TRUE(decodeFrame(makeFrame(fourLevels(), 1), out, error)) << error;
+  EXPECT_EQ(out.classes, (std::vector<std::uint8_t>{0, 1, 2, 3, 3, 0}));
+  EXPECT_EQ(out.level_radii, (std::vector<float>{0.01f, 0.0126f, 0.0159f, 0.02f}));
+  EXPECT_EQ(out.level_counts, (std::vector<std::uint32_t>{2, 1, 1, 2}));
+  EXPECT_EQ(out.small_count, 2u);
+  EXPECT_EQ(out.large_count, 1u);
+  EXPECT_TRUE(out.hasExtraLevels());
+}
+
+TEST(DecodedFrame, TwoClassFrameWithoutLevelRadiiTakesRadiusSmallAndLarge) {
+  DecodedFrame out;
+  std::string error;
+  ASSERT_TRUE(decodeFrame(makeFrame(threeParticles(), 1), out, error)) << error;
+  EXPECT_EQ(out.level_radii, (std::vector<float>{0.04f, 0.05f}));
+  EXPECT_EQ(out.level_counts, (std::vector<std::uint32_t>{1, 2}));
+  EXPECT_FALSE(out.hasExtraLevels());
+}
+
+TEST(DecodedFrame, RejectsALevelBeyondLevelRadii) {
+  FrameSpec spec = fourLevels();
+  spec.level_radii.resize(3);
+  DecodedFrame out;
+  std::string error;
+  EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
+  EXPECT_NE(error.find("size level 3 is beyond the 3 levels"), std::string::npos) << error;
+  spec.level_radii.clear();  // a two-class frame: levels 2 and 3 are unknown
+  EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
+  EXPECT_NE(error.find("size class 2 is neither SMALL (0) nor LARGE (1)"), std::string::npos) << error;
+}
+
+TEST(DecodedFrame, RejectsBadLevelRadii) {
+  FrameSpec spec = fourLevels();
+  spec.level_radii[2] = std::numeric_limits<float>::infinity();
+  DecodedFrame out;
+  std::string error;
+  EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
+  EXPECT_NE(error.find("level_radii[2]"), std::string::npos) << error;
+  spec.level_radii[2] = -0.01f;
+  EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
+  EXPECT_NE(error.find("level_radii[2]"), std::string::npos) << error;
+  spec = fourLevels();
+  spec.level_radii.assign(viewer::kMaxSizeLevels + 1, 0.01f);
+  EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
+  EXPECT_NE(error.find("17 size levels"), std::string::npos) << error;
+  spec.level_radii.resize(viewer::kMaxSizeLevels);
+  EXPECT_TRUE(decodeFrame(makeFrame(spec, 1), out, error)) << error;
 }
 
 TEST(DecodedFrame, RejectsNonFinitePositionAndMissingQuantizationBox) {

@@ -10,13 +10,14 @@ namespace viewer_test {
 
 struct TestParticle {
   float x, y, z;
-  std::uint8_t size_class;  // 0 SMALL, 1 LARGE
+  std::uint8_t size_class;  // size level: 0 SMALL, 1 LARGE, 2.. coarser (needs level_radii)
 };
 
 struct FrameSpec {
   std::vector<TestParticle> particles;
   float radius_small = 0.04f;
   float radius_large = 0.05f;
+  std::vector<float> level_radii;  // sent as given when not empty (else a two-class frame)
   bool quantized = false;
   float box_lo = -1.0f;  // geometry and quantization box, a cube
   float box_hi = 1.0f;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "camera_reference.h"
@@ -126,6 +127,47 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
   EXPECT_TRUE(anyNear(image, kWidth / 2.0 + 32, kHeight / 2.0, 2, yellow));
   EXPECT_TRUE(anyNear(image, kWidth / 2.0, kHeight / 2.0 - 32, 2, yellow));
   EXPECT_FALSE(anyNear(image, kWidth / 2.0, kHeight / 2.0, 3, yellow));
+}
+
+// One particle per size level, each level its own radius (level_radii) and colour: SMALL blue,
+// LARGE red, level 2 green, level 3 amber.
+TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
+  const std::string dir = scratchDir();
+  FrameSpec spec;
+  spec.particles = {
+      {-0.35f, 0.25f, 0.0f, 0}, {0.35f, 0.25f, 0.0f, 1}, {-0.35f, -0.25f, 0.0f, 2}, {0.35f, -0.25f, 0.0f, 3}};
+  spec.level_radii = {0.04f, 0.06f, 0.09f, 0.12f};
+  spec.radius_small = spec.level_radii[0];
+  spec.radius_large = spec.level_radii[1];
+  spec.box_lo = -0.8f;
+  spec.box_hi = 0.8f;
+  TestServer server(makeFrame(spec, 1));
+  auto viewer = startViewer(
+      join(join(cameraArgs(), server.endpointArgs()),
+           {"--snapshot", dir + "/levels.png", "--frames", "2", "--viewer-id", "levels", "--timeout", "120"}),
+      dir + "/viewer.log");
+  const auto code = viewer->waitExit(150s);
+  ASSERT_TRUE(code.has_value() && *code == 0) << readFile(dir + "/viewer.log");
+  gsph::v1::CameraPose pose;
+  ASSERT_TRUE(server.waitForPose([](const auto& p) { return p.viewer_id() == "levels"; }, kWait, &pose));
+  const auto image = loadPng(dir + "/levels.png");
+  const auto isGreen = [](Colour c) { return c.g > 140 && c.g > c.r + 60 && c.g > c.b + 60; };
+  const auto isAmber = [](Colour c) { return c.r > 180 && c.g > 110 && c.b < 100 && c.r > c.g + 30; };
+  const std::function<bool(Colour)> colourOf[] = {isBlue, isRed, isGreen, isAmber};
+  for (const auto& p : spec.particles) {
+    const float r = spec.level_radii[p.size_class];
+    const auto centre = projectToPixel(pose.view().data(), pose.projection().data(), {p.x, p.y, p.z}, kWidth, kHeight);
+    const auto rim = projectToPixel(pose.view().data(), pose.projection().data(), {p.x + r, p.y, p.z}, kWidth, kHeight);
+    const double r_px = rim[0] - centre[0];
+    const auto at = [&](double fraction) {
+      return pixel(image, static_cast<int>(centre[0] + fraction * r_px), static_cast<int>(centre[1]));
+    };
+    const Colour c = at(0.0);
+    EXPECT_TRUE(colourOf[p.size_class](c))
+        << "level " << static_cast<int>(p.size_class) << " is " << c.r << " " << c.g << " " << c.b;
+    EXPECT_FALSE(isDark(at(0.75))) << "level " << static_cast<int>(p.size_class) << " drawn smaller than its radius";
+    EXPECT_TRUE(isDark(at(1.35))) << "level " << static_cast<int>(p.size_class) << " drawn larger than its radius";
+  }
 }
 
 TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {

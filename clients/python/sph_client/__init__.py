@@ -12,6 +12,7 @@ from .endpoints import Endpoints
 from .frames import (
     CLASS_LARGE,
     CLASS_SMALL,
+    MAX_SIZE_LEVELS,
     DecodedFrame,
     FrameDecodeError,
     FrameSubscriber,
@@ -34,6 +35,7 @@ __all__ = [
     "FrameDecodeError",
     "FrameSubscriber",
     "GazePublisher",
+    "MAX_SIZE_LEVELS",
     "PosePublisher",
     "Security",
     "SequenceTracker",

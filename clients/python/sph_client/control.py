@@ -19,6 +19,7 @@ METHODS = {
     "surface": pb.METHOD_SURFACE,
     "gaze": pb.METHOD_GAZE,
     "hybrid": pb.METHOD_HYBRID,
+    "foveated": pb.METHOD_FOVEATED,
 }
 
 

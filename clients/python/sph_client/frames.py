@@ -7,6 +7,7 @@ rather than drawn half right.
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass
 from typing import Optional
@@ -17,8 +18,10 @@ import zmq
 from . import curve
 from .proto import pb
 
+# Size levels: the thesis's two classes are levels 0 and 1; the foveated method adds coarser ones.
 CLASS_SMALL = 0
 CLASS_LARGE = 1
+MAX_SIZE_LEVELS = 16  # the most levels a frame may declare in level_radii (as the viewer)
 
 _FLOAT3 = np.dtype("<f4")
 _UINT16 = np.dtype("<u2")
@@ -32,8 +35,10 @@ class FrameDecodeError(ValueError):
 class DecodedFrame:
     """A checked frame. `positions` is (n, 3) float32; for FLOAT32 frames it is a read-only view of
     the message's bytes (no copy), for QUANTIZED16 frames it is computed from `quantized`, the raw
-    (n, 3) uint16 view. `size_classes` is a (n,) uint8 view (0 SMALL, 1 LARGE); `velocities` an
-    (n, 3) float32 view or None."""
+    (n, 3) uint16 view. `size_classes` is a (n,) uint8 view of each particle's size level (0 SMALL,
+    1 LARGE, 2.. the foveated method's coarser levels); `level_radii` the radius of each level in
+    metres, indexed by that byte (the frame's level_radii, or (radius_small, radius_large) from a
+    server that sends none); `velocities` an (n, 3) float32 view or None."""
 
     message: "pb.Frame"
     positions: np.ndarray
@@ -42,6 +47,15 @@ class DecodedFrame:
     quantized: Optional[np.ndarray] = None
     received_ns: int = 0  # time.monotonic_ns() when the bytes left the socket
     wire_bytes: int = 0
+    level_radii: tuple[float, ...] = ()
+
+    def radii(self) -> np.ndarray:
+        """(n,) float32: each particle's radius in metres, from its size level."""
+        return np.asarray(self.level_radii, dtype=np.float32)[self.size_classes]
+
+    def level_counts(self) -> np.ndarray:
+        """Particles per size level, one entry per level of `level_radii`."""
+        return np.bincount(self.size_classes, minlength=len(self.level_radii))
 
     @property
     def sequence(self) -> int:
@@ -70,6 +84,37 @@ def _triples(data: bytes, dtype: np.dtype, n: int, what: str) -> np.ndarray:
     return np.frombuffer(data, dtype=dtype).reshape(n, 3)
 
 
+def _valid_radius(radius: float) -> bool:
+    return math.isfinite(radius) and radius >= 0.0
+
+
+def _level_radii(message: "pb.Frame") -> tuple[float, ...]:
+    """The radius of every level the frame declares: level_radii, or the two thesis classes from a
+    server that predates it."""
+    if not all(_valid_radius(r) for r in (message.radius_small, message.radius_large)):
+        raise FrameDecodeError("particle radii must be finite and non-negative")
+    if not message.level_radii:
+        return (message.radius_small, message.radius_large)
+    if len(message.level_radii) > MAX_SIZE_LEVELS:
+        raise FrameDecodeError(
+            f"level_radii declares {len(message.level_radii)} size levels, at most {MAX_SIZE_LEVELS} are allowed"
+        )
+    for level, radius in enumerate(message.level_radii):
+        if not _valid_radius(radius):
+            raise FrameDecodeError(f"level_radii[{level}] must be finite and non-negative")
+    return tuple(message.level_radii)
+
+
+def _check_levels(classes: np.ndarray, radii: tuple[float, ...], declared: bool) -> None:
+    if not len(classes) or classes.max() < len(radii):
+        return
+    level = int(classes.max())
+    if declared:
+        raise FrameDecodeError(f"size level {level} is beyond the {len(radii)} levels of level_radii")
+    # Worded as before level_radii for two-class frames, so old and new clients report alike.
+    raise FrameDecodeError(f"size class {level} is neither SMALL (0) nor LARGE (1)")
+
+
 def decode_frame(message: "pb.Frame", check_finite: bool = True) -> DecodedFrame:
     """Checks and unpacks a parsed Frame; raises FrameDecodeError."""
     if message.protocol_version != pb.PROTOCOL_VERSION_CURRENT:
@@ -96,12 +141,12 @@ def decode_frame(message: "pb.Frame", check_finite: bool = True) -> DecodedFrame
             f"size_classes holds {len(message.size_classes)} bytes, expected one per particle ({n})"
         )
     classes = np.frombuffer(message.size_classes, dtype=np.uint8)
-    if n and classes.max() > CLASS_LARGE:
-        raise FrameDecodeError(f"size class {int(classes.max())} is neither SMALL (0) nor LARGE (1)")
+    radii = _level_radii(message)
+    _check_levels(classes, radii, bool(message.level_radii))
     velocities = None
     if message.velocities:
         velocities = _triples(message.velocities, _FLOAT3, n, "velocities")
-    return DecodedFrame(message, positions, classes, velocities, quantized)
+    return DecodedFrame(message, positions, classes, velocities, quantized, level_radii=radii)
 
 
 def decode_frame_bytes(data: bytes, check_finite: bool = True) -> DecodedFrame:

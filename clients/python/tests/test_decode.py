@@ -97,6 +97,34 @@ class DecodeFrame(unittest.TestCase):
         self.assertRefused(make_frame(POSITIONS, [0, 1]), "size_classes holds 2 bytes")
         self.assertRefused(make_frame(POSITIONS, [0, 2, 1]), "size class 2")
 
+    def test_size_levels_take_their_radii_from_level_radii(self):
+        radii = [0.01, 0.0126, 0.0159, 0.02]
+        points = [[0.1 * i, 0.1, 0.1] for i in range(6)]
+        frame = make_frame(points, [0, 1, 2, 3, 3, 0], radius_small=0.01, radius_large=0.0126, level_radii=radii)
+        decoded = decode_frame_bytes(frame.SerializeToString())
+        np.testing.assert_array_equal(decoded.size_classes, [0, 1, 2, 3, 3, 0])
+        np.testing.assert_allclose(decoded.level_radii, radii, rtol=1e-6)
+        np.testing.assert_allclose(decoded.radii(), [radii[c] for c in [0, 1, 2, 3, 3, 0]], rtol=1e-6)
+        np.testing.assert_array_equal(decoded.level_counts(), [2, 1, 1, 2])
+
+    def test_two_class_frame_without_level_radii_takes_radius_small_and_large(self):
+        decoded = decode_frame(make_frame(POSITIONS, [0, 1, 1], radius_small=0.04, radius_large=0.05))
+        np.testing.assert_allclose(decoded.level_radii, [0.04, 0.05], rtol=1e-6)
+        np.testing.assert_allclose(decoded.radii(), [0.04, 0.05, 0.05], rtol=1e-6)
+        np.testing.assert_array_equal(decoded.level_counts(), [1, 2])
+
+    def test_refuses_a_level_beyond_level_radii(self):
+        self.assertRefused(make_frame(POSITIONS, [0, 3, 1], level_radii=[0.01, 0.02, 0.03]),
+                           "size level 3 is beyond the 3 levels")
+        self.assertRefused(make_frame(POSITIONS, [0, 2, 1]), "size class 2 is neither SMALL (0) nor LARGE (1)")
+
+    def test_refuses_bad_level_radii(self):
+        self.assertRefused(make_frame(POSITIONS, [0, 0, 0], level_radii=[0.01, math.nan]), "level_radii[1]")
+        self.assertRefused(make_frame(POSITIONS, [0, 0, 0], level_radii=[0.01, -0.02]), "level_radii[1]")
+        self.assertRefused(make_frame(POSITIONS, [0, 0, 0], level_radii=[0.01] * 17), "17 size levels")
+        self.assertRefused(make_frame(POSITIONS, [0, 0, 0], radius_large=math.inf), "particle radii")
+        decode_frame(make_frame(POSITIONS, [0, 15, 0], level_radii=[0.01] * 16))
+
     def test_refuses_velocities_of_the_wrong_length(self):
         frame = make_frame(POSITIONS, [0, 0, 0], velocities=[[1, 2, 3]])
         self.assertRefused(frame, "velocities")

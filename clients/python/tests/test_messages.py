@@ -44,6 +44,11 @@ class ControlRequests(unittest.TestCase):
         self.assertEqual(method_value("Surface"), pb.METHOD_SURFACE)
         self.assertEqual(method_value(pb.METHOD_REGULAR), pb.METHOD_REGULAR)
         self.assertEqual(method_name(pb.METHOD_HYBRID), "hybrid")
+        self.assertEqual(method_value("foveated"), pb.METHOD_FOVEATED)
+        self.assertEqual(method_name(pb.METHOD_FOVEATED), "foveated")
+        parsed = pb.Control()
+        parsed.ParseFromString(build_request("set_method", 1, method="foveated").SerializeToString())
+        self.assertEqual(method_name(parsed.set_method.method), "foveated")
         with self.assertRaises(ValueError):
             method_value("fast")
 
