@@ -6,11 +6,11 @@
 # until it is closed; without one it renders under Xvfb for --seconds of wall time and says where
 # the picture is.
 #
-#   bash scripts/run_main.sh [--scene NAME] [--method regular|surface|gaze|hybrid]
+#   bash scripts/run_main.sh [--scene NAME] [--method regular|surface|gaze|hybrid|foveated]
 #                            [--seconds S] [--bridge "ARGS"] [--out DIR]
 #
 #   --scene NAME     dambreak (default), dambreak_obstacles, large_box, small_box, wave
-#   --method M       gaze (default), regular, surface or hybrid
+#   --method M       gaze (default), regular, surface, hybrid or foveated
 #   --seconds S      headless only: wall time before the picture is taken (default 20)
 #   --bridge "ARGS"  gaze_bridge options instead of the recording, e.g.
 #                    --bridge "--source gazepoint --gazepoint-host 192.168.1.20"
@@ -41,7 +41,7 @@ while [ $# -gt 0 ]; do
     *) usage_error "unknown argument '$1'" ;;
   esac
 done
-case "$method" in regular|surface|gaze|hybrid) ;; *) usage_error "--method must be regular, surface, gaze or hybrid, not '$method'" ;; esac
+case "$method" in regular|surface|gaze|hybrid|foveated) ;; *) usage_error "--method must be regular, surface, gaze, hybrid or foveated, not '$method'" ;; esac
 [[ "$seconds" =~ ^[0-9]+$ ]] && [ "$seconds" -gt 0 ] || usage_error "--seconds must be a whole number of seconds above 0, not '$seconds'"
 [ -f "scenes/$scene.json" ] || usage_error "--scene: no scene '$scene' (scenes: $(cd scenes && ls ./*.json | sed 's|^\./||; s|\.json$||' | tr '\n' ' '))"
 

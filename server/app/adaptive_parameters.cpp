@@ -21,6 +21,7 @@ const std::map<std::string, double sph::AdaptiveConfig::*>& doubleFields() {
       {"threshold", &sph::AdaptiveConfig::threshold},
       {"surface_normal_scale", &sph::AdaptiveConfig::surface_normal_scale},
       {"foveated_quality", &sph::AdaptiveConfig::foveated_quality},
+      {"foveated_periphery_gain", &sph::AdaptiveConfig::foveated_periphery_gain},
       {"foveated_mar_w0_deg", &sph::AdaptiveConfig::foveated_mar_w0_deg},
       {"foveated_mar_slope", &sph::AdaptiveConfig::foveated_mar_slope},
       {"foveated_display_fov_deg", &sph::AdaptiveConfig::foveated_display_fov_deg},

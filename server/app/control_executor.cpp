@@ -153,11 +153,16 @@ ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& tar
         }
         // To or from regular the scene restarts (the particle classes change wholesale).
         const sph::Method before = session.method();
-        if (session.setMethod(method)) {
-          effects.restart_clock = true;
-          spdlog::info("method {} -> {}: the scene restarted", sph::methodName(before), sph::methodName(method));
-        } else {
-          spdlog::info("method {} -> {}", sph::methodName(before), sph::methodName(method));
+        try {
+          if (session.setMethod(method)) {
+            effects.restart_clock = true;
+            spdlog::info("method {} -> {}: the scene restarted", sph::methodName(before), sph::methodName(method));
+          } else {
+            spdlog::info("method {} -> {}", sph::methodName(before), sph::methodName(method));
+          }
+        } catch (const std::invalid_argument& e) {
+          // A method the preset's solver cannot run (foveated on the thesis's): nothing changed.
+          fail(reply, gsph::v1::ERROR_CODE_BAD_PARAMETER, e.what());
         }
         break;
       }
@@ -173,6 +178,9 @@ ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& tar
           }
         } catch (const scene::SceneError& e) {
           fail(reply, gsph::v1::ERROR_CODE_UNKNOWN_PRESET, e.what());
+        } catch (const std::invalid_argument& e) {
+          // A preset whose solver cannot run the method (the thesis's under foveated): nothing changed.
+          fail(reply, gsph::v1::ERROR_CODE_BAD_PARAMETER, e.what());
         }
         break;
       }

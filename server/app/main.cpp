@@ -72,6 +72,11 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->check(CLI::ExistingFile);
   cli.add_option("--save-state", sim.save_state, "write a checkpoint here when the server stops");
   cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
+  cli.add_option("--realtime", sim.realtime_governor,
+                 "on: the foveated method trades its periphery gain to keep sim time in step with wall time "
+                 "(the periphery coarsens, the gaze point keeps its level); off: the gain stays as configured")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}))
+      ->default_str("on");
   cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
       ->check(publishHzValidator())
       ->capture_default_str();

@@ -15,6 +15,11 @@
 namespace app {
 namespace {
 
+// The governor's window, and the most periphery gain it may ask for: at 16 the finer levels'
+// rings around the gaze are a sixteenth of the eye's (the coarsest level from about 0.06 degrees).
+constexpr double kGovernorWindowS = 0.5;
+constexpr double kMaxPeripheryGain = 16.0;
+
 // Behind wall time by more than this (a slow step, a scene load), sim time is re-anchored instead of
 // running a burst of catch-up steps.
 constexpr std::chrono::milliseconds kMaxLag(100);
@@ -38,7 +43,8 @@ SimLoop::SimLoop(zmq::context_t& context, const SimLoopOptions& options, net::In
       session_(options.scene_dir, options.adaptive_overrides, [this](sph::AdaptiveController& c) { feedGaze(c); }),
       control_target_{session_, settings_, [this](gsph::v1::ServerStatus& s) { fillCounters(s); }},
       pacer_(options.settings.publish_hz, Clock::now()),
-      refusal_log_(options.log_interval) {
+      refusal_log_(options.log_interval),
+      governor_(1.0, kMaxPeripheryGain) {
   encoder_.setNeighborCounts(options.neighbor_counts);
   session_.usePreset(options.preset);
   session_.useSimParameters(options.sim_parameters);
@@ -96,6 +102,9 @@ void SimLoop::run() {
   pacer_ = PublishPacer(settings_.publish_hz, now);
   next_status_ = now + seconds(options_.status_interval_s);
   rate_window_start_ = now;
+  governor_.reset(session_.config().foveated_periphery_gain);
+  governor_window_start_ = now;
+  governor_window_sim_ = session_.sim().time();
   while (!stop_.load()) {
     handleControls();
     pacer_.setRate(settings_.publish_hz);  // a new rate applies from the next frame on
@@ -109,6 +118,7 @@ void SimLoop::run() {
     const bool early = running && gazeWaiting() && now >= nextStepTime() - dt;
     if (running && (settings_.free_run || now >= nextStepTime() || early)) {
       if (!settings_.free_run && now - nextStepTime() > kMaxLag) restartClock(now);
+      const Clock::time_point step_start = Clock::now();
       try {
         session_.step();
       } catch (const std::exception& e) {
@@ -120,6 +130,7 @@ void SimLoop::run() {
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
       now = Clock::now();
+      governor_busy_ += now - step_start;
       // The frame that shows a new gaze sample's refinement goes out now, not at the next tick.
       if (std::exchange(step_used_new_gaze_, false)) pacer_.freshSample();
       if (options_.max_steps > 0 && counters_.steps.load() >= options_.max_steps) {
@@ -128,6 +139,7 @@ void SimLoop::run() {
         spdlog::info("ran {} steps (--max-steps)", counters_.steps.load());
       }
     }
+    govern(now, running);
     if (pacer_.due(now)) publish(now);
     updateRates(now);
     if (options_.status_interval_s > 0.0 && now >= next_status_) {
@@ -227,6 +239,9 @@ void SimLoop::publish(Clock::time_point now) {
   info.method = session_.method();
   info.paused = settings_.paused;
   info.steps_per_second = counters_.steps_per_second.load();
+  info.quality = static_cast<float>(session_.quality());
+  info.periphery_gain = static_cast<float>(session_.peripheryGain());
+  info.realtime_ratio = realtime_ratio_.load();
   if (const sph::AdaptiveController* c = session_.controller()) {
     const sph::AdaptiveStats& stats = c->lastStats();
     gaze_echo_.mode = net::toProtoGazeMode(stats.gaze_mode);
@@ -247,6 +262,26 @@ void SimLoop::publish(Clock::time_point now) {
   } else {
     counters_.frames_dropped.fetch_add(1);
   }
+}
+
+void SimLoop::govern(Clock::time_point now, bool running) {
+  const double window = std::chrono::duration<double>(now - governor_window_start_).count();
+  // A pause, a restart or another method leaves the window's figures meaningless: start afresh.
+  const bool governed = options_.realtime_governor && running && !settings_.free_run &&
+                        session_.method() == sph::Method::Foveated && session_.sim().time() >= governor_window_sim_;
+  if (governed && window < kGovernorWindowS) return;
+  if (governed) {
+    const double sim_s = session_.sim().time() - governor_window_sim_;
+    const double configured = session_.config().foveated_periphery_gain;
+    if (configured != governor_.baseGain()) governor_.reset(configured);
+    session_.setPeripheryGain(governor_.update(sim_s, window, std::chrono::duration<double>(governor_busy_).count()));
+    realtime_ratio_.store(static_cast<float>(governor_.realtimeRatio()));
+  } else if (!running || settings_.free_run) {
+    realtime_ratio_.store(0.0f);
+  }
+  governor_window_start_ = now;
+  governor_window_sim_ = session_.sim().time();
+  governor_busy_ = Clock::duration::zero();
 }
 
 void SimLoop::updateRates(Clock::time_point now) {
@@ -282,6 +317,10 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
       session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large,
       small, coarser, net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
       counters_.frames_dropped.load(), rejections_.total());
+  const float ratio = realtime_ratio_.load();
+  if (ratio > 0.0f) line += fmt::format(", {:.2f} of real time", ratio);
+  if (session_.method() == sph::Method::Foveated)
+    line += fmt::format(", q {:.2f}, periphery gain {:.1f}", session_.quality(), session_.peripheryGain());
   if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";
   std::lock_guard lock(status_mutex_);
   status_line_ = std::move(line);
@@ -303,6 +342,9 @@ void SimLoop::fillCounters(gsph::v1::ServerStatus& status) const {
   status.set_frames_published(counters_.frames_published.load());
   status.set_inputs_rejected(rejections_.total());
   status.set_insecure(options_.insecure);
+  status.set_quality(static_cast<float>(session_.quality()));
+  status.set_periphery_gain(static_cast<float>(session_.peripheryGain()));
+  status.set_realtime_ratio(realtime_ratio_.load());
 }
 
 }  // namespace app

@@ -16,6 +16,7 @@
 
 #include "app/control_executor.h"
 #include "app/publish_pacer.h"
+#include "app/realtime_governor.h"
 #include "app/sim_session.h"
 #include "net/frame_encoder.h"
 #include "net/input_mailbox.h"
@@ -50,6 +51,9 @@ struct SimLoopOptions {
   std::chrono::milliseconds log_interval{1000};
   // Bound beyond loopback without CURVE (--insecure): said in every status line and ServerStatus.
   bool insecure = false;
+  // The foveated method trades its quality factor to keep simulated time in step with wall time
+  // (realtime_governor.h); not in free-run.
+  bool realtime_governor = true;
 };
 
 // Counters the status line, the control replies and the tests read from other threads.
@@ -95,6 +99,8 @@ class SimLoop {
   void fillCounters(gsph::v1::ServerStatus& status) const;
   void updateRates(Clock::time_point now);
   void refreshStatusLine(Clock::time_point now);
+  // After each governor window: the foveated method's quality for the next.
+  void govern(Clock::time_point now, bool running);
 
   SimLoopOptions options_;
   net::InputMailbox& mailbox_;
@@ -122,6 +128,12 @@ class SimLoop {
   Clock::time_point next_status_{};
   Clock::time_point rate_window_start_{};
   std::int64_t rate_window_steps_ = 0;
+  // The real-time governor's window: where it started (wall, sim) and the steps' wall time in it.
+  RealtimeGovernor governor_;
+  Clock::time_point governor_window_start_{};
+  double governor_window_sim_ = 0.0;
+  Clock::duration governor_busy_{};
+  std::atomic<float> realtime_ratio_{0.0f};
   std::uint64_t frame_sequence_ = 0;
 
   SimCounters counters_;

@@ -125,6 +125,22 @@ void SimSession::setConfig(const sph::AdaptiveConfig& config) {
   if (controller_ != nullptr) controller_->setConfig(config_);
 }
 
+void SimSession::setPeripheryGain(double gain) {
+  if (controller_ == nullptr || method_ != sph::Method::Foveated) return;
+  sph::AdaptiveConfig in_force = controller_->config();
+  in_force.foveated_periphery_gain = gain;
+  controller_->setConfig(in_force);
+}
+
+double SimSession::quality() const {
+  return controller_ != nullptr && method_ == sph::Method::Foveated ? controller_->config().foveated_quality : 0.0;
+}
+
+double SimSession::peripheryGain() const {
+  return controller_ != nullptr && method_ == sph::Method::Foveated ? controller_->config().foveated_periphery_gain
+                                                                    : 0.0;
+}
+
 void SimSession::setCamera(const sph::ScreenCamera& camera, bool from_client) {
   camera_ = camera;
   camera_from_client_ = from_client;

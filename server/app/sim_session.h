@@ -57,6 +57,12 @@ class SimSession {
   bool setMethod(sph::Method method);
   // Validated by the caller (AdaptiveConfig::validate).
   void setConfig(const sph::AdaptiveConfig& config);
+  // The foveated method's periphery gain in force (the real-time governor's); config() keeps the
+  // configured one, which a restart brings back. Nothing for the other methods.
+  void setPeripheryGain(double gain);
+  // The foveated method's q and periphery gain in force; 0 for the other methods.
+  double quality() const;
+  double peripheryGain() const;
   // The camera the gaze projection uses; `from_client` false means the scene's default camera.
   void setCamera(const sph::ScreenCamera& camera, bool from_client);
 

@@ -126,6 +126,9 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   f.set_scene(info.scene);
   f.set_method(toProtoMethod(info.method));
   f.set_paused(info.paused);
+  f.set_quality(info.quality);
+  f.set_periphery_gain(info.periphery_gain);
+  f.set_realtime_ratio(info.realtime_ratio);
   f.set_particle_count(static_cast<std::uint32_t>(p.size()));
   f.set_large_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Large)));
   f.set_small_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Small)));

@@ -36,6 +36,9 @@ struct FrameInfo {
   sph::Method method = sph::Method::Regular;
   bool paused = false;
   double steps_per_second = 0.0;
+  float quality = 0.0f;         // the foveated method's q in force; 0 for the others
+  float periphery_gain = 0.0f;  // and its periphery gain (the real-time governor's); 0 for the others
+  float realtime_ratio = 0.0f;  // simulated over wall seconds lately; 0 when not measured
   GazeEcho gaze;
   const gsph::v1::CameraPose* camera = nullptr;  // the pose the projection uses; nullptr: none
 };

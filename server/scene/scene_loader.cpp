@@ -158,6 +158,7 @@ void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
       {"gaze_stale_s", &c.gaze_stale_s},
       {"gaze_hold_s", &c.gaze_hold_s},
       {"foveated_quality", &c.foveated_quality},
+      {"foveated_periphery_gain", &c.foveated_periphery_gain},
       {"foveated_mar_w0_deg", &c.foveated_mar_w0_deg},
       {"foveated_mar_slope", &c.foveated_mar_slope},
       {"foveated_display_fov_deg", &c.foveated_display_fov_deg},

@@ -184,9 +184,10 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
   const double rms = rms_sum / kLast;
   ASSERT_GT(interior, 0);
   density_error /= interior;
-  std::printf("still gaze: %d levels, %d level changes and a mean rms speed of %.4f m/s in the last %d frames, "
-              "mean |rho/rho0 - 1| %.4f\n",
-              levels_present, changes, rms, kLast, density_error);
+  std::printf(
+      "still gaze: %d levels, %d level changes and a mean rms speed of %.4f m/s in the last %d frames, "
+      "mean |rho/rho0 - 1| %.4f\n",
+      levels_present, changes, rms, kLast, density_error);
   EXPECT_GE(levels_present, 3);
   // An occasional change as the water settles; a flickering particle changes every frame or two.
   EXPECT_LE(changes, 30) << "levels flicker under a still gaze";

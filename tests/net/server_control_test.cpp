@@ -269,3 +269,39 @@ TEST(ServerControl, ReqSocketsAreAnsweredToo) {
 }
 
 }  // namespace
+
+namespace {
+
+// The foveated method needs an incompressible solver: refused on the thesis's (nothing changes),
+// taken on pbf, where frames and the status carry each level's radius and the quality in force.
+TEST(ServerControl, FoveatedRunsOnPbfAndSaysItsQuality) {
+  ControlRun run;
+  Control foveated;
+  foveated.mutable_set_method()->set_method(gsph::v1::METHOD_FOVEATED);
+  ControlReply r = run.request(foveated);
+  EXPECT_FALSE(r.ok()) << "tiny_pool's thesis preset has two size classes";
+  EXPECT_EQ(r.error_code(), gsph::v1::ERROR_CODE_BAD_PARAMETER);
+  EXPECT_NE(r.error().find("size levels"), std::string::npos) << r.error();
+  EXPECT_EQ(r.status().method(), gsph::v1::METHOD_GAZE);
+
+  Control pbf;
+  pbf.mutable_set_preset()->set_preset("pbf");
+  ASSERT_TRUE(run.request(pbf).ok());
+  r = run.request(foveated);
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r.status().method(), gsph::v1::METHOD_FOVEATED);
+  EXPECT_GE(r.status().quality(), 1.0f);
+  EXPECT_GE(r.status().periphery_gain(), 1.0f);
+  ASSERT_TRUE(run.sub.waitFor([](const gsph::v1::Frame& f) {
+    return f.method() == gsph::v1::METHOD_FOVEATED && f.level_radii_size() == 4 && f.quality() >= 1.0f &&
+           f.periphery_gain() >= 1.0f;
+  })) << "frames of the foveated method with its levels, quality and periphery gain";
+
+  Control thesis;
+  thesis.mutable_set_preset()->set_preset("thesis");
+  r = run.request(thesis);
+  EXPECT_FALSE(r.ok()) << "the thesis's solver cannot run foveated";
+  EXPECT_EQ(r.status().preset(), "pbf");
+}
+
+}  // namespace

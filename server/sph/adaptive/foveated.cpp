@@ -55,6 +55,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const Eigen::Vector4f depth_row = -camera.view.row(2).cast<float>();  // view-space distance
   const auto q = static_cast<float>(config.foveated_quality);
   const auto mar_gain = static_cast<float>(config.foveated_mar_slope / config.foveated_mar_w0_deg);
+  const auto periphery_gain = static_cast<float>(config.foveated_periphery_gain);
   const float hidden_depth = static_cast<float>(config.foveated_hidden_depth) *
                              static_cast<float>(std::cbrt(levels[0].mass / sim.params().rest_density));
   // The free surface, as the surface method finds it (3.44), |n| scaled to LARGE's support: the
@@ -66,6 +67,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const int thin_level = std::clamp(static_cast<int>(config.foveated_thin_level), 0, kCoarsest);
 
   scratch.allowed.resize(n);
+  scratch.budget.resize(n);
   scratch.depth.resize(n);
   scratch.visible.resize(n);
   scratch.finest_near.resize(n);
@@ -90,7 +92,9 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const bool hidden = d >= hidden_depth;
       scratch.depth[i] = depth;
       scratch.visible[i] = static_cast<std::int8_t>(on_screen && !hidden);
-      scratch.allowed[i] = disc.in_front ? q * (1.0f + mar_gain * e) : std::numeric_limits<float>::infinity();
+      const float inf = std::numeric_limits<float>::infinity();
+      scratch.allowed[i] = disc.in_front ? q * (1.0f + periphery_gain * mar_gain * e) : inf;
+      scratch.budget[i] = disc.in_front ? q * (1.0f + mar_gain * e) : inf;
       if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
     }
 #pragma omp critical(sph_fovea_depth)
@@ -112,6 +116,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float depth = scratch.depth[i];
       const float distance_ratio = fovea_depth > 0.0f ? std::max(depth, 0.0f) / fovea_depth : 1.0f;
       const float allowed = scratch.allowed[i] * distance_ratio;  // in finest widths at the gaze
+      const float budget = scratch.budget[i] * distance_ratio;    // the same at g = 1
       const float d = p.surface_distance[i];
       int acuity = 0;
       while (acuity < kCoarsest && width[acuity + 1] <= allowed) ++acuity;
@@ -150,7 +155,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       still_coarse += shown > target;
       if (scratch.visible[i] != 0) {
         ++visible;
-        over_budget += width[shown] > allowed;
+        over_budget += width[shown] > budget;
       }
       split_wanted += decision == kSplit;
       merge_wanted += decision == kMerge;

@@ -33,8 +33,8 @@ namespace sph {
 // What the last decision saw, for the bench's perceptual budget and the server's status.
 struct FoveatedView {
   int visible = 0;  // particles in front of the eye, on the display and not hidden under water
-  // Visible ones wider than q MAR(e) / MAR(0) finest particles at the gaze once this decision's
-  // splits are made.
+  // Visible ones wider than q MAR(e) / MAR(0) finest particles at the gaze (at periphery gain 1,
+  // whatever the gain in force) once this decision's splits are made.
   int over_budget = 0;
   int still_coarse = 0;      // particles more than one level coarser than their target
   float fovea_depth = 0.0f;  // distance of the water at the gaze point, metres
@@ -43,6 +43,7 @@ struct FoveatedView {
 // Per-particle scratch of the decision, kept between steps so the step does not allocate.
 struct FoveatedScratch {
   std::vector<float> allowed;  // the width the eye allows, in finest particles at the gaze point
+  std::vector<float> budget;   // the same at periphery gain 1 (the perceptual budget)
   std::vector<float> depth;    // view-space distance
   std::vector<std::int8_t> visible;
   std::vector<std::int8_t> finest_near;  // the finest level among a particle and its neighbours

@@ -88,6 +88,7 @@ void AdaptiveConfig::validate() const {
   requireRange("gaze_stale_s", gaze_stale_s, 0.0, 3600.0);
   requireRange("gaze_hold_s", gaze_hold_s, 0.0, 3600.0);
   requireRange("foveated_quality", foveated_quality, 1.0, 1e3);
+  requireRange("foveated_periphery_gain", foveated_periphery_gain, 1.0, 1e3);
   requireRange("foveated_mar_w0_deg", foveated_mar_w0_deg, 1e-4, 10.0);
   requireRange("foveated_mar_slope", foveated_mar_slope, 0.0, 10.0);
   requireRange("foveated_display_fov_deg", foveated_display_fov_deg, 0.0, 179.0);
