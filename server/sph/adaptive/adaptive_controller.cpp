@@ -10,6 +10,9 @@ namespace sph {
 
 namespace {
 
+// In support radii (pairStragglers).
+constexpr float kFoveatedStragglerReach = 4.0f;
+
 void requireAdaptive(Method method) {
   if (method == Method::Regular) {
     throw std::invalid_argument("the regular method has no adaptive step");
@@ -116,8 +119,11 @@ void AdaptiveController::finish(Simulation& sim, const DecisionCounts& wanted, G
     choosePartners(p, sim.grid(), decision_, partner_, coarsest, partner_scratch_);
     // Stragglers pair within two of their support radii: far enough to reach a sibling left
     // behind in coarser water, near enough that the merged particle lands inside the water
-    // between them.
-    pairStragglers(p, decision_, partner_, 2.0f, coarsest, stragglers_);
+    // between them. The foveated method's reach farther: a fine particle left over where the eye
+    // allows a coarser one holds its neighbourhood fine (grading) until it pairs, and where it
+    // may merge the eye does not resolve where its mass goes.
+    const float reach = method_ == Method::Foveated ? kFoveatedStragglerReach : 2.0f;
+    pairStragglers(p, decision_, partner_, reach, coarsest, stragglers_);
   } else {
     std::fill(partner_.begin(), partner_.end(), -1);
   }
