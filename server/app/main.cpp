@@ -26,6 +26,7 @@ namespace {
 struct CliOptions {
   app::ServerOptions server;
   std::string method;                  // empty: the scene's default method
+  std::string realtime = "on";         // --realtime on|off
   std::map<std::string, double> gaze;  // --gaze-* options given
   std::vector<std::string> adaptive;   // --adaptive name=value
   std::vector<std::string> params;     // --param key=value
@@ -72,11 +73,11 @@ void addOptions(CLI::App& cli, CliOptions& o) {
       ->check(CLI::ExistingFile);
   cli.add_option("--save-state", sim.save_state, "write a checkpoint here when the server stops");
   cli.add_flag("--free-run", sim.settings.free_run, "step as fast as possible (default: sim time follows wall time)");
-  cli.add_option("--realtime", sim.realtime_governor,
+  cli.add_option("--realtime", o.realtime,
                  "on: the foveated method trades its periphery gain to keep sim time in step with wall time "
                  "(the periphery coarsens, the gaze point keeps its level); off: the gain stays as configured")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}))
-      ->default_str("on");
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   cli.add_option("--publish-hz", sim.settings.publish_hz, "frames published per second")
       ->check(publishHzValidator())
       ->capture_default_str();
@@ -158,6 +159,7 @@ int main(int argc, char** argv) {
   cli::logToStderr();  // stdout stays free for data; every log line and error goes to stderr
   if (o.server.sim.preset == "scene") o.server.sim.preset.clear();
 
+  o.server.sim.realtime_governor = o.realtime == "on";
   if (!o.method.empty()) {
     sph::Method m;
     sph::methodByName(o.method, m);  // checked by CLI11

@@ -300,7 +300,7 @@ class MainCommand(unittest.TestCase):
     def test_bad_values(self):
         r = self.main_command("--method", "fast")
         self.assertEqual(r.returncode, 2)
-        self.assertIn("regular, surface, gaze or hybrid", r.stderr)
+        self.assertIn("regular, surface, gaze, hybrid or foveated", r.stderr)
         r = self.main_command("--scene", "nosuch")
         self.assertEqual(r.returncode, 2)
         self.assertIn("dambreak", r.stderr)
