@@ -266,9 +266,12 @@ void SimLoop::publish(Clock::time_point now) {
 
 void SimLoop::govern(Clock::time_point now, bool running) {
   const double window = std::chrono::duration<double>(now - governor_window_start_).count();
-  // A pause, a restart or another method leaves the window's figures meaningless: start afresh.
-  const bool governed = options_.realtime_governor && running && !settings_.free_run &&
-                        session_.method() == sph::Method::Foveated && session_.sim().time() >= governor_window_sim_;
+  // A restarted scene (its clock went back) starts from the configured gain; a pause, free-run or
+  // another method leaves the window's figures meaningless: start the window afresh.
+  const bool restarted = session_.sim().time() < governor_window_sim_;
+  if (restarted) governor_.reset(session_.config().foveated_periphery_gain);
+  const bool governed = options_.realtime_governor && running && !settings_.free_run && !restarted &&
+                        session_.method() == sph::Method::Foveated;
   if (governed && window < kGovernorWindowS) return;
   if (governed) {
     const double sim_s = session_.sim().time() - governor_window_sim_;
@@ -276,7 +279,7 @@ void SimLoop::govern(Clock::time_point now, bool running) {
     if (configured != governor_.baseGain()) governor_.reset(configured);
     session_.setPeripheryGain(governor_.update(sim_s, window, std::chrono::duration<double>(governor_busy_).count()));
     realtime_ratio_.store(static_cast<float>(governor_.realtimeRatio()));
-  } else if (!running || settings_.free_run) {
+  } else {
     realtime_ratio_.store(0.0f);
   }
   governor_window_start_ = now;
