@@ -16,7 +16,8 @@ namespace sph {
 
 using Vec3 = Eigen::Vector3f;
 
-// A LARGE particle splits into two SMALL children (eqs. (3.37)-(3.39)); each child's attribute is:
+// A particle splits into two of the level below, a LARGE into two SMALL children (eqs.
+// (3.37)-(3.39)); each child's attribute is:
 enum class SplitRule : std::uint8_t {
   kCopy,     // the parent's value (velocity, eq. (3.39); position, then moved apart along the split axis)
   kHalve,    // half the parent's value: an extensive quantity (mass, eq. (3.38); volume)
@@ -26,7 +27,8 @@ enum class SplitRule : std::uint8_t {
   kMark,     // kPlacedThisFrame for both: the adaptive step placed them (the `placed` flag)
 };
 
-// Two SMALL particles merge into one LARGE (eqs. (3.40)-(3.43)); the survivor's attribute is:
+// Two particles of a level merge into one of the level above, two SMALL into one LARGE (eqs.
+// (3.40)-(3.43)); the survivor's attribute is:
 enum class MergeRule : std::uint8_t {
   kKeep,     // the survivor's own value (the id)
   kAverage,  // the mean of the two: equal masses, so the centre of mass and momentum are kept
