@@ -5,8 +5,6 @@
 #include <omp.h>
 
 #include <cmath>
-#include <cstring>
-#include <memory>
 
 #include "adaptive_test_util.h"
 
@@ -14,30 +12,14 @@ namespace {
 
 using adaptive_test::cameraOf;
 using adaptive_test::expectMassByClass;
+using adaptive_test::expectSameBits;
+using adaptive_test::gazeAt;
+using adaptive_test::makeRig;
 using adaptive_test::poolScene;
-
-struct Rig {
-  std::unique_ptr<sph::Simulation> sim;
-  sph::AdaptiveController* controller = nullptr;
-};
-
-Rig makeRig(const sph::Scene& scene, sph::Method method, sph::AdaptiveConfig config = {}) {
-  Rig rig;
-  rig.sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method));
-  auto controller = sph::makeAdaptiveController(method, config, cameraOf(scene));
-  rig.controller = controller.get();
-  rig.sim->setAdaptiveStep(std::move(controller));
-  return rig;
-}
-
-sph::GazeInput gazeAt(double x, double y) {
-  sph::GazeInput g;
-  g.present = true;
-  g.x = x;
-  g.y = y;
-  g.age_s = 0.0;
-  return g;
-}
+using adaptive_test::Rig;
+using adaptive_test::Snapshot;
+using adaptive_test::snapshotOf;
+using adaptive_test::surgeScene;
 
 // Distance in viewport widths from the gaze to a particle's projected centre, and that disc's radius.
 struct Seen {
@@ -52,12 +34,6 @@ Seen seenFrom(const sph::Projector& proj, const sph::ParticleSet& p, std::size_t
 }
 
 // A dam-break in miniature: the water fills half the box and surges, so particles move a lot.
-sph::Scene surgeScene() {
-  sph::Scene scene = poolScene(0.6, 0.3, 1200);
-  scene.water.max = Eigen::Vector3d(0.25, 1.0, 0.3);
-  return scene;
-}
-
 TEST(AdaptiveMethods, MassIsExactByClassAfterEveryStep) {
   for (sph::Method method : {sph::Method::Surface, sph::Method::Gaze, sph::Method::Hybrid}) {
     SCOPED_TRACE(sph::methodName(method));
@@ -255,13 +231,6 @@ TEST(AdaptiveMethods, BadSettingsAreRejected) {
   EXPECT_EQ(m, sph::Method::Hybrid);
 }
 
-struct Snapshot {
-  std::vector<std::uint32_t> id;
-  std::vector<sph::Vec3> position;
-  std::vector<sph::Vec3> velocity;
-  std::vector<sph::SizeClass> size_class;
-};
-
 Snapshot runWithThreads(sph::Method method, int threads, const char* preset = "thesis") {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
@@ -273,19 +242,13 @@ Snapshot runWithThreads(sph::Method method, int threads, const char* preset = "t
     rig.sim->step();
   }
   omp_set_num_threads(previous);
-  const sph::ParticleSet& p = rig.sim->particles();
-  return {p.id, p.position, p.velocity, p.size_class};
+  return snapshotOf(rig.sim->particles());
 }
 
 void expectThreadIndependent(const char* preset) {
   for (sph::Method method : {sph::Method::Surface, sph::Method::Gaze, sph::Method::Hybrid}) {
     SCOPED_TRACE(sph::methodName(method));
-    const Snapshot one = runWithThreads(method, 1, preset);
-    const Snapshot two = runWithThreads(method, 2, preset);
-    ASSERT_EQ(one.id, two.id);
-    ASSERT_EQ(one.size_class, two.size_class);
-    ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
-    ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
+    expectSameBits(runWithThreads(method, 1, preset), runWithThreads(method, 2, preset));
   }
 }
 

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
+#include <memory>
+#include <vector>
 
 #include "sph/adaptive/adaptive_controller.h"
 #include "sph/camera.h"
@@ -31,6 +34,55 @@ inline sph::Scene poolScene(double width, double length, int large) {
 }
 
 inline sph::ScreenCamera cameraOf(const sph::Scene& scene) { return sph::cameraFromSpec(scene.camera); }
+
+// A column of water released into a wider box: it surges, so split and merge meet moving water.
+inline sph::Scene surgeScene() {
+  sph::Scene scene = poolScene(0.6, 0.3, 1200);
+  scene.water.max = Eigen::Vector3d(0.25, 1.0, 0.3);
+  return scene;
+}
+
+// A simulation with a method's adaptive step, and the controller to feed gaze between steps.
+struct Rig {
+  std::unique_ptr<sph::Simulation> sim;
+  sph::AdaptiveController* controller = nullptr;
+};
+
+inline Rig makeRig(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config = {}) {
+  Rig rig;
+  rig.sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method));
+  auto controller = sph::makeAdaptiveController(method, config, cameraOf(scene));
+  rig.controller = controller.get();
+  rig.sim->setAdaptiveStep(std::move(controller));
+  return rig;
+}
+
+// A fresh, valid gaze sample at normalized screen coordinates.
+inline sph::GazeInput gazeAt(double x, double y) {
+  sph::GazeInput g;
+  g.present = true;
+  g.x = x;
+  g.y = y;
+  g.age_s = 0.0;
+  return g;
+}
+
+// What a thread-count comparison compares: ids, levels, and the bits of positions and velocities.
+struct Snapshot {
+  std::vector<std::uint32_t> id;
+  std::vector<sph::Vec3> position;
+  std::vector<sph::Vec3> velocity;
+  std::vector<sph::SizeClass> size_class;
+};
+
+inline Snapshot snapshotOf(const sph::ParticleSet& p) { return {p.id, p.position, p.velocity, p.size_class}; }
+
+inline void expectSameBits(const Snapshot& one, const Snapshot& two) {
+  ASSERT_EQ(one.id, two.id);
+  ASSERT_EQ(one.size_class, two.size_class);
+  ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
+  ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
+}
 
 // Total mass must equal the sum over the levels of m_k N_k exactly (the float masses are exact
 // binary multiples, and the double sum of up to 20,000 of them is exact).

@@ -8,9 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <map>
-#include <memory>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -22,35 +20,20 @@ namespace {
 
 using adaptive_test::cameraOf;
 using adaptive_test::expectMassByClass;
+using adaptive_test::expectSameBits;
+using adaptive_test::gazeAt;
+using adaptive_test::makeRig;
 using adaptive_test::poolScene;
+using adaptive_test::Rig;
+using adaptive_test::Snapshot;
+using adaptive_test::snapshotOf;
 
-struct Rig {
-  std::unique_ptr<sph::Simulation> sim;
-  sph::AdaptiveController* controller = nullptr;
-};
+// The foveated method's rig on a preset's surge.
+Rig foveatedRig(const sph::Scene& scene) { return makeRig(scene, sph::Method::Foveated, scene.adaptive); }
 
-Rig makeRig(const sph::Scene& scene) {
-  Rig rig;
-  rig.sim = std::make_unique<sph::Simulation>(scene, sph::startClass(sph::Method::Foveated));
-  auto controller = sph::makeAdaptiveController(sph::Method::Foveated, scene.adaptive, cameraOf(scene));
-  rig.controller = controller.get();
-  rig.sim->setAdaptiveStep(std::move(controller));
-  return rig;
-}
-
-sph::GazeInput gazeAt(double x, double y) {
-  sph::GazeInput g;
-  g.present = true;
-  g.x = x;
-  g.y = y;
-  return g;
-}
-
-// A column of water released into a wider box: it surges, so the levels meet moving water.
 sph::Scene surgeScene(const char* preset) {
-  sph::Scene scene = poolScene(0.6, 0.3, 1200);
+  sph::Scene scene = adaptive_test::surgeScene();
   EXPECT_TRUE(sph::presetByName(preset, scene.params));
-  scene.water.max = Eigen::Vector3d(0.25, 1.0, 0.3);
   return scene;
 }
 
@@ -91,7 +74,7 @@ void expectHealthy(const sph::Simulation& sim) {
 }
 
 void expectExactAndHealthy(const char* preset) {
-  Rig rig = makeRig(surgeScene(preset));
+  Rig rig = foveatedRig(surgeScene(preset));
   const double initial = rig.sim->particles().totalMass();
   int changes = 0;
   int levels_seen = 0;
@@ -113,33 +96,20 @@ void expectExactAndHealthy(const char* preset) {
 TEST(Foveated, MassIsExactByLevelAndWaterStaysHealthyPbf) { expectExactAndHealthy("pbf"); }
 TEST(Foveated, MassIsExactByLevelAndWaterStaysHealthyDfsph) { expectExactAndHealthy("dfsph"); }
 
-struct Snapshot {
-  std::vector<std::uint32_t> id;
-  std::vector<sph::Vec3> position;
-  std::vector<sph::Vec3> velocity;
-  std::vector<sph::SizeClass> size_class;
-};
-
 Snapshot runWithThreads(const char* preset, int threads) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  Rig rig = makeRig(surgeScene(preset));
+  Rig rig = foveatedRig(surgeScene(preset));
   for (int s = 0; s < 50; ++s) {
     rig.controller->setGaze(wanderingGaze(s));
     rig.sim->step();
   }
   omp_set_num_threads(previous);
-  const sph::ParticleSet& p = rig.sim->particles();
-  return {p.id, p.position, p.velocity, p.size_class};
+  return snapshotOf(rig.sim->particles());
 }
 
 void expectThreadIndependent(const char* preset) {
-  const Snapshot one = runWithThreads(preset, 1);
-  const Snapshot two = runWithThreads(preset, 2);
-  ASSERT_EQ(one.id, two.id);
-  ASSERT_EQ(one.size_class, two.size_class);
-  ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
-  ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
+  expectSameBits(runWithThreads(preset, 1), runWithThreads(preset, 2));
 }
 
 TEST(Foveated, ResultIndependentOfThreadCountPbf) { expectThreadIndependent("pbf"); }
@@ -153,7 +123,7 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
   sph::Scene scene = poolScene(0.4, 0.4, 2000);
   ASSERT_TRUE(sph::presetByName("pbf", scene.params));
   scene.boundary.box.max.y() = 0.6;
-  Rig rig = makeRig(scene);
+  Rig rig = foveatedRig(scene);
   int changes = 0;
   double rms_sum = 0.0;
   constexpr int kFrames = 500;
@@ -199,7 +169,7 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
 // the eye resolves there (the finest level at the gaze point itself) within three frames.
 TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
   sph::Scene scene = surgeScene("pbf");
-  Rig rig = makeRig(scene);
+  Rig rig = foveatedRig(scene);
   for (int s = 0; s < 40; ++s) {
     rig.controller->setGaze(gazeAt(0.3, 0.6));
     rig.sim->step();
