@@ -61,14 +61,13 @@ class SnapshotSeries {
   PvdIndex index_;
 };
 
-}  // namespace
-
-namespace {
-
+// Whether the scene's solver runs the method's levels. Every solver runs the thesis's two
+// classes, so only a method with more builds the solver to ask it.
 bool solverHasLevelsOf(const sph::Scene& scene, const std::string& method) {
   sph::Method m;
   if (!sph::methodByName(method, m)) return true;
-  return sph::classIndex(sph::coarsestClass(m)) < sph::makeFluidSolver(scene)->sizeLevels();
+  const int levels_needed = sph::classIndex(sph::coarsestClass(m)) + 1;
+  return levels_needed <= sph::kThesisClassCount || levels_needed <= sph::makeFluidSolver(scene)->sizeLevels();
 }
 
 }  // namespace
