@@ -28,6 +28,7 @@ const std::map<std::string, double sph::AdaptiveConfig::*>& doubleFields() {
       {"foveated_hidden_depth", &sph::AdaptiveConfig::foveated_hidden_depth},
       {"foveated_coarsen_margin", &sph::AdaptiveConfig::foveated_coarsen_margin},
       {"foveated_thin_fill", &sph::AdaptiveConfig::foveated_thin_fill},
+      {"foveated_shallow_spread", &sph::AdaptiveConfig::foveated_shallow_spread},
       {"foveated_thin_level", &sph::AdaptiveConfig::foveated_thin_level},
   };
   return fields;

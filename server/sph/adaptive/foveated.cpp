@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "sph/thread_share.h"
@@ -25,6 +26,23 @@ Eigen::Vector3f screenDirection(float sx, float sy, float tan_half, float aspect
 
 float angleDeg(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
   return static_cast<float>(kDegrees) * std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+// How far a particle's neighbours spread across their thinnest direction, against their mean
+// spread: sqrt(smallest eigenvalue / mean eigenvalue) of the second moment of their offsets about
+// the particle. About the particle, not their centroid, so a ball and a half ball (a flat free
+// surface, a wall) both read 1; one layer of neighbours reads 0, two about 0.5. A spread of at
+// least `enough` may be returned as any value >= it.
+float neighbourSpread(const Eigen::Matrix3f& moment, float enough) {
+  const float mean = moment.trace() / 3.0f;
+  if (!(mean > 0.0f)) return 0.0f;  // no neighbours: a drop
+  // The smallest eigenvalue is at least det / ((trace - smallest) / 2)^2 >= det / (1.5 mean)^2:
+  // above `enough`, the eigenvalues are not needed.
+  const float lower_bound = moment.determinant() / (2.25f * mean * mean);
+  if (lower_bound >= enough * enough * mean) return std::sqrt(lower_bound / mean);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> eigen;
+  eigen.computeDirect(moment, Eigen::EigenvaluesOnly);
+  return std::sqrt(std::max(eigen.eigenvalues()(0), 0.0f) / mean);
 }
 
 }  // namespace
@@ -56,8 +74,9 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto q = static_cast<float>(config.foveated_quality);
   const auto mar_gain = static_cast<float>(config.foveated_mar_slope / config.foveated_mar_w0_deg);
   const auto periphery_gain = static_cast<float>(config.foveated_periphery_gain);
-  const float hidden_depth = static_cast<float>(config.foveated_hidden_depth) *
-                             static_cast<float>(std::cbrt(levels[0].mass / sim.params().rest_density));
+  const auto finest_spacing = static_cast<float>(std::cbrt(levels[0].mass / sim.params().rest_density));
+  const float hidden_depth = static_cast<float>(config.foveated_hidden_depth) * finest_spacing;
+  const auto least_spread = static_cast<float>(config.foveated_shallow_spread);
   // The free surface, as the surface method finds it (3.44), |n| scaled to LARGE's support: the
   // colour field's gradient falls as 1 / h with the particle's own kernel.
   const auto surface_threshold = static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());
@@ -128,9 +147,12 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // between the two and reaches farther than either, so it must find no finer level there.
       int finest_neighbour = kCoarsest;
       int finest_two_hops = scratch.finest_near[i];
+      Eigen::Matrix3f moment = Eigen::Matrix3f::Zero();  // second moment of the neighbours' offsets about i
       for (const std::uint32_t j : grid.neighbors(i)) {
         finest_neighbour = std::min(finest_neighbour, classIndex(p.size_class[j]));
         finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
+        const Eigen::Vector3f r = p.position[j] - p.position[i];
+        moment.noalias() += r * r.transpose();
       }
       // How full the particle's support is: its density, which every level estimates alike. A
       // flat free surface fills about half of it; a sheet thinner than the support, a jet or a
@@ -144,6 +166,13 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       int coarsen_to = std::min(coarsen_ok - 1, finest_two_hops);
       if (thin) target = std::min(target, thin_level);
       if (thin_after) coarsen_to = std::min(coarsen_to, thin_level - 1);
+      // Shallow water: a particle whose neighbours lie nearly in one layer (a sheet spread on
+      // the floor) stays at most at the thin level; coarsening needs the margin.
+      if (target > thin_level || coarsen_to >= thin_level) {  // the eigenvalues only where they count
+        const float spread = neighbourSpread(moment, least_spread * margin);
+        if (spread < least_spread) target = std::min(target, thin_level);
+        if (spread < least_spread * margin) coarsen_to = std::min(coarsen_to, thin_level - 1);
+      }
       std::int8_t decision = kRemain;
       if (level > target) {
         decision = kSplit;

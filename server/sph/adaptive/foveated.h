@@ -11,6 +11,8 @@
 //   hidden   water deeper under the free surface than a few finest spacings may be coarsest.
 //   thin     a particle with a thin neighbourhood (a sheet, a jet, a drop, the front's tip) stays
 //            at most at the thin level, so thin water keeps particles across it.
+//   shallow  a particle whose neighbours lie nearly in one layer (water spread on the floor
+//            thinner than the particle is wide) stays at most at the thin level.
 //   graded   no particle is more than one level coarser than its finest neighbour: every pair
 //            the solvers see is of one level or two neighbouring ones (mass ratio 2, as the
 //            thesis's SMALL-LARGE pairs).

@@ -75,6 +75,11 @@ struct AdaptiveConfig {
   // it.
   double foveated_thin_fill = 0.4;
   double foveated_thin_level = 1;  // a level (a whole number)
+  // A particle whose neighbours spread across their thinnest direction less than this share of
+  // their mean spread (1 in water of any depth, 0 in one layer: a sheet spread on the floor)
+  // stays at most at the thin level: a layer under a coarse particle's width reads a low density
+  // and loses its volume.
+  double foveated_shallow_spread = 0.5;
 
   // Throws std::invalid_argument naming the field when a value is not finite or out of range.
   void validate() const;
