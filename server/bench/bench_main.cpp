@@ -31,7 +31,7 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
   app.add_option("--scene", request.scenes, "scene name, path to a .json file, comma list, or 'all'")
       ->capture_default_str();
   app.add_option("--method", request.methods,
-                 "regular, surface, gaze, hybrid, a comma list, or 'all' (default: each scene's own)")
+                 "regular, surface, gaze, hybrid, foveated, a comma list, or 'all' (default: each scene's own)")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
             if (text == "all") return {};
@@ -47,7 +47,7 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
           },
           "METHOD[,METHOD...]"));
   app.add_option("--gaze", request.gaze_path,
-                 "gaze recording (CSV: time_s,x,y,valid) replayed for gaze and hybrid, instead of "
+                 "gaze recording (CSV: time_s,x,y,valid) replayed for gaze, hybrid and foveated, instead of "
                  "the scene's own")
       ->check(CLI::ExistingFile);
   app.add_option("--frames", request.frames, "frames (steps) to run; 0 = the scene's own count")

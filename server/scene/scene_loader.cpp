@@ -13,6 +13,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "sph/adaptive/method.h"
 #include "sph/param_table.h"
 
 namespace scene {
@@ -353,7 +354,9 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source, c
   if (doc.contains("method")) {
     sph::Method m;
     if (!doc["method"].is_string() || !sph::methodByName(doc["method"].get<std::string>(), m)) {
-      ctx.fail("method", "unknown method (known: regular, surface, gaze, hybrid)");
+      std::string known;
+      for (const std::string& name : sph::methodNames()) known += (known.empty() ? "" : ", ") + name;
+      ctx.fail("method", "unknown method (known: " + known + ")");
     }
     s.method = doc["method"].get<std::string>();
   }
