@@ -29,6 +29,7 @@ const std::map<std::string, double sph::AdaptiveConfig::*>& doubleFields() {
       {"foveated_coarsen_margin", &sph::AdaptiveConfig::foveated_coarsen_margin},
       {"foveated_thin_fill", &sph::AdaptiveConfig::foveated_thin_fill},
       {"foveated_shallow_spread", &sph::AdaptiveConfig::foveated_shallow_spread},
+      {"foveated_merge_hold_s", &sph::AdaptiveConfig::foveated_merge_hold_s},
       {"foveated_thin_level", &sph::AdaptiveConfig::foveated_thin_level},
   };
   return fields;

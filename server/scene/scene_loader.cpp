@@ -167,6 +167,7 @@ void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
       {"foveated_coarsen_margin", &c.foveated_coarsen_margin},
       {"foveated_thin_fill", &c.foveated_thin_fill},
       {"foveated_shallow_spread", &c.foveated_shallow_spread},
+      {"foveated_merge_hold_s", &c.foveated_merge_hold_s},
       {"foveated_thin_level", &c.foveated_thin_level},
   };
   std::set<std::string> allowed = {"surface_includes_walls"};

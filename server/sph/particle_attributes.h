@@ -88,6 +88,10 @@ struct ParticleAttributes {
   // (local_placement.h). After each frame the solver says what becomes of the marks
   // (FluidSolver::releasePlaced).
   std::vector<std::uint8_t> placed;
+  // foveated: frames in a row the eye has allowed this particle a coarser level; a merge waits for
+  // `foveated_merge_hold_s` of them (adaptive/foveated.h). A split's children and a merged
+  // particle start again from 0.
+  std::vector<std::uint16_t> coarsen_wait;
 };
 
 // The values of ParticleAttributes::placed.
@@ -134,7 +138,9 @@ inline const auto kParticleAttributes = std::make_tuple(
     AttributeSpec<float>{&ParticleAttributes::kappa_divergence, "kappa_divergence", 0.0f, SplitRule::kCopy,
                          MergeRule::kAverage},
     AttributeSpec<std::uint8_t>{&ParticleAttributes::placed, "placed", std::uint8_t{0}, SplitRule::kMark,
-                                MergeRule::kMark});
+                                MergeRule::kMark},
+    AttributeSpec<std::uint16_t>{&ParticleAttributes::coarsen_wait, "coarsen_wait", std::uint16_t{0}, SplitRule::kReset,
+                                 MergeRule::kReset});
 
 // Every vector is the same size, whatever its element type: a member of ParticleAttributes that is
 // missing from the table (or listed twice) changes one side of this and stops the build.

@@ -99,7 +99,9 @@ TEST(Foveated, MassIsExactByLevelAndWaterStaysHealthyDfsph) { expectExactAndHeal
 Snapshot runWithThreads(const char* preset, int threads) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  Rig rig = foveatedRig(surgeScene(preset));
+  sph::Scene scene = surgeScene(preset);
+  scene.adaptive.foveated_merge_hold_s = 0.05;  // the merges' wait counted too
+  Rig rig = foveatedRig(scene);
   for (int s = 0; s < 50; ++s) {
     rig.controller->setGaze(wanderingGaze(s));
     rig.sim->step();
@@ -163,6 +165,44 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
   EXPECT_LE(changes, 30) << "levels flicker under a still gaze";
   EXPECT_LT(rms, 0.05);
   EXPECT_LE(density_error, 0.01);
+}
+
+// A resting tank under a gaze that sweeps across it and back: every level change stirs the
+// water (fluids.md, "Foveated water"), and with merges held until the eye has allowed the coarser
+// level for a few seconds the swept water keeps its levels, so the tank changes and moves far less.
+struct SweepResult {
+  int changes = 0;
+  double rms = 0.0;  // mean over the last frames
+};
+SweepResult sweepTheTank(double merge_hold_s) {
+  sph::Scene scene = poolScene(0.4, 0.4, 2000);
+  EXPECT_TRUE(sph::presetByName("pbf", scene.params));
+  scene.boundary.box.max.y() = 0.6;
+  scene.adaptive.foveated_merge_hold_s = merge_hold_s;
+  Rig rig = foveatedRig(scene);
+  constexpr int kFrames = 900, kLast = 300, kPass = 100;  // a pass across the tank a second
+  SweepResult result;
+  for (int s = 0; s < kFrames; ++s) {
+    const double phase = std::fmod(s / static_cast<double>(kPass), 2.0);
+    const Levels before = levelsOf(rig.sim->particles());
+    rig.controller->setGaze(gazeAt(0.3 + 0.4 * (phase < 1.0 ? phase : 2.0 - phase), 0.55));
+    rig.sim->step();
+    if (s < kFrames - kLast) continue;
+    result.changes += levelChanges(before, rig.sim->particles());
+    double v2 = 0.0;
+    for (const sph::Vec3& v : rig.sim->particles().velocity) v2 += v.squaredNorm();
+    result.rms += std::sqrt(v2 / static_cast<double>(rig.sim->particles().size())) / kLast;
+  }
+  std::printf("sweeping gaze, merge hold %.0f s: %d level changes, mean rms speed %.4f m/s in the last %d frames\n",
+              merge_hold_s, result.changes, result.rms, kLast);
+  return result;
+}
+
+TEST(Foveated, AMergeHoldKeepsATankUnderASweepingGazeFromChurning) {
+  const SweepResult at_once = sweepTheTank(0.0);
+  const SweepResult held = sweepTheTank(5.0);
+  EXPECT_LT(held.changes * 4, at_once.changes);
+  EXPECT_LT(held.rms * 2.0, at_once.rms);
 }
 
 // Water spread on the floor thinner than a coarse particle is wide: the shallow rule keeps it at

@@ -77,6 +77,8 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto finest_spacing = static_cast<float>(std::cbrt(levels[0].mass / sim.params().rest_density));
   const float hidden_depth = static_cast<float>(config.foveated_hidden_depth) * finest_spacing;
   const auto least_spread = static_cast<float>(config.foveated_shallow_spread);
+  const auto hold_frames =
+      static_cast<int>(std::min(std::ceil(config.foveated_merge_hold_s / sim.params().time_step - 1e-9), 65535.0));
   // The free surface, as the surface method finds it (3.44), |n| scaled to LARGE's support: the
   // colour field's gradient falls as 1 / h with the particle's own kernel.
   const auto surface_threshold = static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());
@@ -173,10 +175,17 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         if (spread < least_spread) target = std::min(target, thin_level);
         if (spread < least_spread * margin) coarsen_to = std::min(coarsen_to, thin_level - 1);
       }
+      // A merge needs the eye to have allowed the coarser level for the hold without a break
+      // (counted once a step, by the step's first decision).
+      if (!splits_only) {
+        const bool eye_allows = coarsen_ok > level;
+        p.coarsen_wait[i] = eye_allows ? static_cast<std::uint16_t>(std::min(p.coarsen_wait[i] + 1, 65535)) : 0;
+      }
       std::int8_t decision = kRemain;
       if (level > target) {
         decision = kSplit;
-      } else if (!splits_only && level <= coarsen_to && level < kCoarsest && p.placed[i] == kNotPlaced) {
+      } else if (!splits_only && level <= coarsen_to && level < kCoarsest && p.placed[i] == kNotPlaced &&
+                 p.coarsen_wait[i] >= hold_frames) {
         decision = kMerge;
       }
       out[i] = decision;

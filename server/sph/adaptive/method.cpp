@@ -97,6 +97,7 @@ void AdaptiveConfig::validate() const {
   requireRange("foveated_thin_fill", foveated_thin_fill, 0.0, 1.0);
   requireRange("foveated_thin_level", foveated_thin_level, 0.0, kSizeClassCount - 1);
   requireRange("foveated_shallow_spread", foveated_shallow_spread, 0.0, 1.0);
+  requireRange("foveated_merge_hold_s", foveated_merge_hold_s, 0.0, 600.0);
   if (foveated_thin_level != std::floor(foveated_thin_level)) {
     throw std::invalid_argument("adaptive setting 'foveated_thin_level' must be a whole level");
   }

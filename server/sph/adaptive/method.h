@@ -80,6 +80,11 @@ struct AdaptiveConfig {
   // stays at most at the thin level: a layer under a coarse particle's width reads a low density
   // and loses its volume.
   double foveated_shallow_spread = 0.5;
+  // A merge waits until the eye has allowed the coarser level this many seconds without a break:
+  // a gaze that comes back within it finds the water as it left it, so still water under a
+  // moving gaze changes levels, and is stirred by the changes, far less; moving water keeps the
+  // finer trail behind the gaze that long (docs/fluids.md, "Foveated water"). 0: at once.
+  double foveated_merge_hold_s = 0.0;
 
   // Throws std::invalid_argument naming the field when a value is not finite or out of range.
   void validate() const;
