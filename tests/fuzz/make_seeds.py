@@ -88,6 +88,13 @@ def frames():
     quantized.quantization_box.CopyFrom(frame.geometry.box)
     quantized.positions = (positions * 65535).astype("<u2").tobytes()
     yield "quantized16", quantized
+    levels = pb.Frame()
+    levels.CopyFrom(frame)
+    levels.method = pb.METHOD_FOVEATED
+    levels.size_classes = bytes([0, 1, 2, 3, 3, 2])
+    levels.level_radii.extend([0.01, 0.0126, 0.0159, 0.02])
+    levels.quality, levels.realtime_ratio, levels.periphery_gain = 1.0, 0.97, 4.0
+    yield "levels", levels
 
 
 OPEN_GAZE = {
