@@ -121,7 +121,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
               "sample age (s) after which surface refinement takes over");
   cli.add_option("--adaptive", o.adaptive,
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
-                 "surface_includes_walls, gaze_*); repeatable");
+                 "surface_includes_walls, gaze_*, foveated_*); repeatable");
   cli.option_defaults()->group("Scene and physics");
   cli.add_option("--param", o.params,
                  "KEY=VALUE, a simulation parameter over the preset's and the scene file's (listed below); "
