@@ -51,9 +51,12 @@ def gaze_samples():
 
 def camera_poses():
     view = look_at((1.0, 1.2, 2.6), (1.0, 0.1, 0.4))
-    yield "scene_camera", pose_message(view, perspective(45, 16 / 9, 0.05, 20), 1280, 720, viewer_id="viewer",
-                                       sequence=3)
-    yield "singular", pose_message(np.zeros((4, 4)), np.identity(4), 800, 600, viewer_id="v", sequence=1)
+    scene_camera = pose_message(view, perspective(45, 16 / 9, 0.05, 20), 1280, 720, viewer_id="viewer", sequence=3)
+    singular = pose_message(np.zeros((4, 4)), np.identity(4), 800, 600, viewer_id="v", sequence=1)
+    for pose in (scene_camera, singular):
+        pose.sent_time_us = 1_700_000_000_000_000  # a fixed stamp: a rerun writes the same seeds
+    yield "scene_camera", scene_camera
+    yield "singular", singular
 
 
 def controls():
