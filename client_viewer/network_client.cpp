@@ -15,6 +15,7 @@ constexpr int kHeartbeatTimeoutMs = 3000;
 constexpr int kReconnectIvlMs = 200;
 constexpr int kReconnectIvlMaxMs = 2000;
 constexpr std::int64_t kMaxFrameBytes = 256ll << 20;  // ~10 M particles as float32
+constexpr int kFrameQueue = 4;                        // frames the SUB socket holds while the network thread decodes
 constexpr std::int64_t kMaxReplyBytes = 1ll << 20;
 constexpr std::size_t kMaxQueuedControls = 8;
 constexpr std::size_t kMaxQueuedReplies = 32;
@@ -63,8 +64,10 @@ NetworkClient::~NetworkClient() { stop(); }
 void NetworkClient::start() {
   if (running_) return;
   auto s = std::make_unique<Sockets>();
-  // CONFLATE must be set before connect; it keeps only the newest (single-part) frame.
-  s->frames.set(zmq::sockopt::conflate, 1);
+  // A short queue, drained to its newest frame on each wake-up. Not CONFLATE: libzmq's conflating
+  // pipe can miss the wake-up for a frame that lands while the reader finds the pipe empty, and
+  // the last frame of a burst (a paused server's) then waits for the next one.
+  s->frames.set(zmq::sockopt::rcvhwm, kFrameQueue);
   s->frames.set(zmq::sockopt::maxmsgsize, kMaxFrameBytes);
   s->frames.set(zmq::sockopt::subscribe, "");
   commonOptions(s->frames, endpoints_.curve);
@@ -159,9 +162,10 @@ void NetworkClient::run() {
 }
 
 void NetworkClient::receiveFrames(Sockets& s) {
-  zmq::message_t message;
-  // With CONFLATE there is at most one waiting; the loop only guards against a burst during decode.
+  zmq::message_t message, newer;
+  // Only the newest of the queued frames is decoded; the loop takes what lands during decode.
   while (s.frames.recv(message, zmq::recv_flags::dontwait)) {
+    while (s.frames.recv(newer, zmq::recv_flags::dontwait)) message.swap(newer);
     const auto arrival = Clock::now();
     auto frame = std::make_shared<DecodedFrame>();
     std::string error;

@@ -1,5 +1,5 @@
 // All of the viewer's sockets, owned by one network thread so rendering never blocks on I/O:
-//   frames  SUB + ZMQ_CONFLATE (only the newest frame is ever kept), decoded here;
+//   frames  SUB with a short queue drained to its newest frame (only that one is decoded), here;
 //   pose    PUB, the latest CameraPose, sent on every change and re-sent every kPoseResend;
 //   gaze    PUB, mouse gaze samples when --mouse-gaze is on;
 //   control DEALER, Control requests with replies (ROUTER on the server).
@@ -42,7 +42,7 @@ struct PoseData {
 
 struct NetworkStats {
   std::uint64_t frames_received = 0;  // decoded successfully
-  std::uint64_t frames_skipped = 0;   // sequence gaps: dropped by PUB or conflated away
+  std::uint64_t frames_skipped = 0;   // sequence gaps: dropped by PUB or passed over for a newer one
   std::uint64_t frames_rejected = 0;  // did not parse or decode
   std::uint64_t server_restarts = 0;  // sequence went backwards
   std::uint64_t poses_sent = 0;
