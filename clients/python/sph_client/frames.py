@@ -22,6 +22,7 @@ from .proto import pb
 CLASS_SMALL = 0
 CLASS_LARGE = 1
 MAX_SIZE_LEVELS = 16  # the most levels a frame may declare in level_radii (as the viewer)
+NEWEST_ONLY_QUEUE = 4  # frames a conflating FrameSubscriber's socket holds between reads (as the viewer)
 
 _FLOAT3 = np.dtype("<f4")
 _UINT16 = np.dtype("<u2")
@@ -187,8 +188,9 @@ class SequenceTracker:
 class FrameSubscriber:
     """A SUB socket on the frame endpoint (subscribed to everything: frames carry no topic part).
 
-    conflate=True keeps only the newest frame (a viewer); False queues up to `rcvhwm` frames so
-    every frame is seen and sequence gaps are real drops (a load test, a soak).
+    conflate=True keeps only the newest frame (a viewer): each read drains what is queued and
+    returns the newest; False queues up to `rcvhwm` frames so every frame is seen and sequence
+    gaps are real drops (a load test, a soak).
     """
 
     def __init__(
@@ -205,14 +207,15 @@ class FrameSubscriber:
         self.socket = self._context.socket(zmq.SUB)
         with curve.closed_on_error(self.socket):
             self.socket.setsockopt(zmq.LINGER, 0)
-            if conflate:
-                self.socket.setsockopt(zmq.CONFLATE, 1)
-            else:
-                self.socket.setsockopt(zmq.RCVHWM, rcvhwm)
+            # conflate: a short queue drained to its newest frame, not ZMQ_CONFLATE, whose pipe can
+            # miss the wake-up for a frame that lands as the reader finds it empty (the last
+            # frame of a burst then waits for the next one).
+            self.socket.setsockopt(zmq.RCVHWM, NEWEST_ONLY_QUEUE if conflate else rcvhwm)
             curve.configure_client(self.socket, curve_secret, curve_server)
             self.socket.setsockopt(zmq.SUBSCRIBE, b"")
             self.socket.connect(endpoint)
         self.endpoint = endpoint
+        self.newest_only = conflate
         self.sequence = SequenceTracker()
         self.rejected = 0  # frames that did not decode
 
@@ -220,7 +223,13 @@ class FrameSubscriber:
         """The next frame's bytes, or None after timeout_s (None waits forever)."""
         if timeout_s is not None and not self.socket.poll(int(timeout_s * 1000)):
             return None
-        return self.socket.recv(copy=True)
+        data = self.socket.recv(copy=True)
+        while self.newest_only:
+            try:
+                data = self.socket.recv(zmq.NOBLOCK, copy=True)
+            except zmq.Again:
+                break
+        return data
 
     def recv(self, timeout_s: Optional[float] = None, decode: bool = True) -> Optional[DecodedFrame]:
         """The next frame that decodes, or None after timeout_s. decode=False skips the numpy

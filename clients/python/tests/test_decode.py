@@ -4,8 +4,9 @@ import math
 import unittest
 
 import numpy as np
+import zmq
 
-from sph_client import FrameDecodeError, SequenceTracker, decode_frame, decode_frame_bytes, pb
+from sph_client import FrameDecodeError, FrameSubscriber, SequenceTracker, decode_frame, decode_frame_bytes, pb
 
 from .frame_factory import make_frame
 
@@ -151,3 +152,27 @@ class Sequences(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class NewestOnly(unittest.TestCase):
+    def test_a_burst_ends_on_its_last_frame(self):
+        # Over real loopback sockets: the conflating subscriber must reach the burst's last frame
+        # (ZMQ_CONFLATE could leave it waiting for a frame that never comes).
+        context = zmq.Context.instance()
+        pub = context.socket(zmq.XPUB)
+        pub.setsockopt(zmq.LINGER, 0)
+        pub.bind("tcp://127.0.0.1:*")
+        try:
+            with FrameSubscriber(pub.getsockopt_string(zmq.LAST_ENDPOINT), conflate=True) as sub:
+                self.assertTrue(pub.poll(10_000), "the subscriber should join")
+                pub.recv()  # its subscription
+                for sequence in range(1, 201):
+                    pub.send(make_frame(POSITIONS, [0, 1, 0], sequence=sequence).SerializeToString())
+                last = 0
+                while last < 200:
+                    frame = sub.recv(timeout_s=10.0)
+                    self.assertIsNotNone(frame, f"no frame after sequence {last}")
+                    self.assertGreater(frame.message.sequence, last)
+                    last = frame.message.sequence
+        finally:
+            pub.close(linger=0)
