@@ -151,7 +151,7 @@ ControlReply executeControl(const gsph::v1::Control& request, ControlTarget& tar
                "unknown method value " + std::to_string(request.set_method().method()));
           break;
         }
-        // To or from regular the scene restarts (the particle classes change wholesale).
+        // To or from regular or foveated the scene restarts (the levels change wholesale).
         const sph::Method before = session.method();
         try {
           if (session.setMethod(method)) {

@@ -51,7 +51,7 @@ struct SimLoopOptions {
   std::chrono::milliseconds log_interval{1000};
   // Bound beyond loopback without CURVE (--insecure): said in every status line and ServerStatus.
   bool insecure = false;
-  // The foveated method trades its quality factor to keep simulated time in step with wall time
+  // The foveated method trades its periphery gain to keep simulated time in step with wall time
   // (realtime_governor.h); not in free-run.
   bool realtime_governor = true;
 };
@@ -99,7 +99,7 @@ class SimLoop {
   void fillCounters(gsph::v1::ServerStatus& status) const;
   void updateRates(Clock::time_point now);
   void refreshStatusLine(Clock::time_point now);
-  // After each governor window: the foveated method's quality for the next.
+  // After each governor window: the foveated method's periphery gain for the next.
   void govern(Clock::time_point now, bool running);
 
   SimLoopOptions options_;

@@ -125,20 +125,26 @@ void SimSession::setConfig(const sph::AdaptiveConfig& config) {
   if (controller_ != nullptr) controller_->setConfig(config_);
 }
 
+sph::AdaptiveController* SimSession::foveatedController() const {
+  return method_ == sph::Method::Foveated ? controller_ : nullptr;
+}
+
 void SimSession::setPeripheryGain(double gain) {
-  if (controller_ == nullptr || method_ != sph::Method::Foveated) return;
-  sph::AdaptiveConfig in_force = controller_->config();
+  sph::AdaptiveController* foveated = foveatedController();
+  if (foveated == nullptr) return;
+  sph::AdaptiveConfig in_force = foveated->config();
   in_force.foveated_periphery_gain = gain;
-  controller_->setConfig(in_force);
+  foveated->setConfig(in_force);
 }
 
 double SimSession::quality() const {
-  return controller_ != nullptr && method_ == sph::Method::Foveated ? controller_->config().foveated_quality : 0.0;
+  const sph::AdaptiveController* foveated = foveatedController();
+  return foveated != nullptr ? foveated->config().foveated_quality : 0.0;
 }
 
 double SimSession::peripheryGain() const {
-  return controller_ != nullptr && method_ == sph::Method::Foveated ? controller_->config().foveated_periphery_gain
-                                                                    : 0.0;
+  const sph::AdaptiveController* foveated = foveatedController();
+  return foveated != nullptr ? foveated->config().foveated_periphery_gain : 0.0;
 }
 
 void SimSession::setCamera(const sph::ScreenCamera& camera, bool from_client) {

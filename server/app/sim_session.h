@@ -84,6 +84,8 @@ class SimSession {
 
  private:
   void start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config);
+  // The controller when the method is foveated, else null.
+  sph::AdaptiveController* foveatedController() const;
 
   std::string scene_dir_;
   std::string preset_override_;  // empty: each scene's own preset

@@ -117,14 +117,26 @@ void expectThreadIndependent(const char* preset) {
 TEST(Foveated, ResultIndependentOfThreadCountPbf) { expectThreadIndependent("pbf"); }
 TEST(Foveated, ResultIndependentOfThreadCountDfsph) { expectThreadIndependent("dfsph"); }
 
+// A pbf tank of water at rest, 0.4 x 0.4 m, for the gaze to look at.
+sph::Scene restingTank() {
+  sph::Scene scene = poolScene(0.4, 0.4, 2000);
+  EXPECT_TRUE(sph::presetByName("pbf", scene.params));
+  scene.boundary.box.max.y() = 0.6;
+  return scene;
+}
+
+double rmsSpeed(const sph::ParticleSet& p) {
+  double v2 = 0.0;
+  for (const sph::Vec3& v : p.velocity) v2 += v.squaredNorm();
+  return std::sqrt(v2 / static_cast<double>(p.size()));
+}
+
 // A resting tank under a still gaze: once its levels have settled around the fovea they stay
 // (no particle flickers between two levels) and the tank settles with its density. (Water of
 // several levels keeps a slow stir, 0.01-0.03 m/s rms, where one level comes to rest: fluids.md,
 // "Foveated water"; flickering levels drive it at about 0.1 m/s.)
 TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
-  sph::Scene scene = poolScene(0.4, 0.4, 2000);
-  ASSERT_TRUE(sph::presetByName("pbf", scene.params));
-  scene.boundary.box.max.y() = 0.6;
+  const sph::Scene scene = restingTank();
   Rig rig = foveatedRig(scene);
   int changes = 0;
   double rms_sum = 0.0;
@@ -136,9 +148,7 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
     rig.sim->step();
     if (s < kFrames - kLast) continue;
     changes += levelChanges(before, rig.sim->particles());
-    double v2 = 0.0;
-    for (const sph::Vec3& v : rig.sim->particles().velocity) v2 += v.squaredNorm();
-    rms_sum += std::sqrt(v2 / static_cast<double>(rig.sim->particles().size()));
+    rms_sum += rmsSpeed(rig.sim->particles());
   }
   const sph::ParticleSet& p = rig.sim->particles();
   const double rho0 = scene.params.rest_density;
@@ -175,9 +185,7 @@ struct SweepResult {
   double rms = 0.0;  // mean over the last frames
 };
 SweepResult sweepTheTank(double merge_hold_s) {
-  sph::Scene scene = poolScene(0.4, 0.4, 2000);
-  EXPECT_TRUE(sph::presetByName("pbf", scene.params));
-  scene.boundary.box.max.y() = 0.6;
+  sph::Scene scene = restingTank();
   scene.adaptive.foveated_merge_hold_s = merge_hold_s;
   Rig rig = foveatedRig(scene);
   constexpr int kFrames = 900, kLast = 300, kPass = 100;  // a pass across the tank a second
@@ -189,9 +197,7 @@ SweepResult sweepTheTank(double merge_hold_s) {
     rig.sim->step();
     if (s < kFrames - kLast) continue;
     result.changes += levelChanges(before, rig.sim->particles());
-    double v2 = 0.0;
-    for (const sph::Vec3& v : rig.sim->particles().velocity) v2 += v.squaredNorm();
-    result.rms += std::sqrt(v2 / static_cast<double>(rig.sim->particles().size())) / kLast;
+    result.rms += rmsSpeed(rig.sim->particles()) / kLast;
   }
   std::printf("sweeping gaze, merge hold %.0f s: %d level changes, mean rms speed %.4f m/s in the last %d frames\n",
               merge_hold_s, result.changes, result.rms, kLast);
