@@ -90,11 +90,14 @@ ExitCode ViewerApp::run() {
   std::fprintf(stderr, "sph_viewer: waiting for frames from %s\n", options_.endpoints.frames.c_str());
   started_ = Clock::now();
   last_fps_time_ = started_;
+  last_render_ = started_ - std::chrono::hours(1);  // the first picture is due at once
   last_gaze_time_ = started_ - kMouseGazePeriod;
   GLFWwindow* window = window_.get();
   while (!glfwWindowShouldClose(window) && !g_stop_requested) {
+    waitForRenderSlot();
     glfwPollEvents();
     const auto now = Clock::now();
+    last_render_ = now;
     const bool new_frame = takeFrame();
     while (auto reply = client_.takeReply()) panel_.showReply(*reply);
     handleKeys();
@@ -148,6 +151,17 @@ ExitCode ViewerApp::run() {
   if (options_.report) report_.print(std::chrono::duration<double>(Clock::now() - started_).count());
   client_.stop();
   return exit_code_;
+}
+
+void ViewerApp::waitForRenderSlot() {
+  if (!(options_.max_fps > 0.0)) return;
+  const auto next =
+      last_render_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options_.max_fps));
+  // Window events (input, close) still wake the loop; the network thread keeps draining frames.
+  for (auto now = Clock::now(); now < next && !g_stop_requested; now = Clock::now()) {
+    glfwWaitEventsTimeout(std::chrono::duration<double>(next - now).count());
+    if (glfwWindowShouldClose(window_.get())) return;
+  }
 }
 
 bool ViewerApp::takeFrame() {

@@ -50,6 +50,8 @@ class ViewerApp {
     float aspect() const { return static_cast<float>(fb_w) / static_cast<float>(fb_h); }
   };
 
+  // With --max-fps: waits (handling window events) until the next picture is due.
+  void waitForRenderSlot();
   bool takeFrame();  // true when a new frame arrived
   void handleKeys();
   void sendPose(const Viewport& vp);
@@ -89,6 +91,7 @@ class ViewerApp {
   int frames_shown_ = 0;
   Clock::time_point started_;
   Clock::time_point last_fps_time_;
+  Clock::time_point last_render_;  // when the last picture started (--max-fps)
   int renders_since_fps_ = 0;
   Clock::time_point last_gaze_time_;
   ExitCode exit_code_ = ExitCode::kOk;

@@ -44,6 +44,11 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
           ->excludes("--mouse-gaze");
   app.add_flag("!--no-panel", o.panel, "Hide the statistics and control panel");
   app.add_flag("!--no-vsync", o.vsync, "Render as fast as possible instead of at the display rate");
+  app.add_option("--max-fps", o.max_fps,
+                 "Render at most this many pictures a second (0: no cap); software GL sharing the server's cores "
+                 "takes them from the simulation")
+      ->check(cli::range(0, 1000))
+      ->capture_default_str();
   std::map<std::string, RenderMode> renders{{"fluid", RenderMode::kFluid}, {"particles", RenderMode::kParticles}};
   app.add_option("--render", o.render,
                  "fluid (a liquid surface, the default) or particles (spheres by size class, for research)")

@@ -20,6 +20,7 @@ struct ViewerOptions {
   std::optional<std::array<float, 2>> gaze_at;  // a fixed gaze point (demos, screenshots)
   bool panel = true;
   bool vsync = true;
+  double max_fps = 0.0;  // renders at most this many pictures a second (0: no cap beyond vsync)
   RenderMode render = RenderMode::kFluid;
   RenderDebug render_debug = RenderDebug::kNone;
   int fluid_scale = 0;  // fluid passes at 1 / this resolution; 0: by the GL (defaultFluidScale())

@@ -199,6 +199,30 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
   EXPECT_TRUE(sameWithinOnePixel(images[1], images[0], where)) << "quantized pixel " << where << " unmatched";
 }
 
+// A render cap (--max-fps, for software GL sharing the server's cores) waits between pictures and
+// draws the same picture.
+TEST(ViewerWindow, ARenderCapDrawsTheSamePicture) {
+  const std::string dir = scratchDir();
+  FrameSpec spec;
+  spec.particles = particleCloud(400, -0.6f, 0.6f);
+  spec.box_lo = -0.8f;
+  spec.box_hi = 0.8f;
+  std::vector<viewer::RgbaImage> images;
+  for (const char* cap : {"0", "4"}) {
+    TestServer server(makeFrame(spec, 1));
+    const std::string png = dir + "/cap" + cap + ".png";
+    auto viewer = startViewer(join(join(cameraArgs(), server.endpointArgs()),
+                                   {"--snapshot", png, "--frames", "3", "--max-fps", cap, "--timeout", "120"}),
+                              dir + "/viewer" + cap + ".log");
+    const auto code = viewer->waitExit(150s);
+    ASSERT_TRUE(code.has_value() && *code == 0) << readFile(dir + "/viewer" + cap + ".log");
+    images.push_back(loadPng(png));
+  }
+  std::string where;
+  EXPECT_TRUE(sameWithinOnePixel(images[0], images[1], where)) << "uncapped pixel " << where << " unmatched";
+  EXPECT_TRUE(sameWithinOnePixel(images[1], images[0], where)) << "capped pixel " << where << " unmatched";
+}
+
 // The test frames' sim time is 0.01 s per sequence number: 30 frames never reach 0.5 s, 100 do.
 TEST(ViewerWindow, SnapshotAtWaitsForTheSimTime) {
   const std::string dir = scratchDir();
@@ -240,7 +264,7 @@ TEST(ViewerOptions, HelpListsEveryOptionAndBadOptionsFail) {
   const std::string text = readFile(dir + "/help.log");
   for (const char* option :
        {"--frames-endpoint", "--pose-endpoint", "--gaze-endpoint", "--control-endpoint", "--mouse-gaze", "--snapshot",
-        "--frames", "--eye", "--target", "--report", "--render", "--render-debug", "--fluid-scale"}) {
+        "--frames", "--eye", "--target", "--report", "--render", "--render-debug", "--fluid-scale", "--max-fps"}) {
     EXPECT_NE(text.find(option), std::string::npos) << option;
   }
   auto exitOf = [&dir](std::vector<std::string> args, const std::string& log) {
@@ -249,6 +273,7 @@ TEST(ViewerOptions, HelpListsEveryOptionAndBadOptionsFail) {
   // Every usage error exits 2, CLI11's own checks included (cli::parse maps them).
   EXPECT_EQ(exitOf({"--width", "-5"}, "bad.log"), std::optional<int>(2));
   EXPECT_EQ(exitOf({"--render", "voxels"}, "bad_mode.log"), std::optional<int>(2));
+  EXPECT_EQ(exitOf({"--max-fps", "-1"}, "bad_fps.log"), std::optional<int>(2));
   EXPECT_EQ(exitOf({"--eye", "0", "0", "1"}, "half_camera.log"), std::optional<int>(2));
   // Thickness is a fluid pass; particles mode has none to show.
   EXPECT_EQ(exitOf({"--render", "particles", "--render-debug", "thickness"}, "thickness.log"), std::optional<int>(2));
