@@ -129,6 +129,7 @@ void SimLoop::run() {
       }
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
+      countGazePoint();
       now = Clock::now();
       governor_busy_ += now - step_start;
       // The frame that shows a new gaze sample's refinement goes out now, not at the next tick.
@@ -143,8 +144,10 @@ void SimLoop::run() {
     if (pacer_.due(now)) publish(now);
     updateRates(now);
     if (options_.status_interval_s > 0.0 && now >= next_status_) {
+      refreshStatusLine(now);
       spdlog::info("{}", statusLine());
       next_status_ = now + seconds(options_.status_interval_s);
+      gaze_steps_ = gaze_on_water_steps_ = gaze_finest_steps_ = 0;
     }
     if (running && settings_.free_run) continue;
     Clock::time_point deadline = pacer_.nextDue();
@@ -287,13 +290,22 @@ void SimLoop::govern(Clock::time_point now, bool running) {
   governor_busy_ = Clock::duration::zero();
 }
 
+void SimLoop::countGazePoint() {
+  const sph::AdaptiveController* controller = session_.controller();
+  if (session_.method() != sph::Method::Foveated || controller == nullptr) return;
+  const int level = controller->lastStats().fovea_level;
+  ++gaze_steps_;
+  gaze_on_water_steps_ += level >= 0;
+  gaze_finest_steps_ += level == 0;
+}
+
 void SimLoop::updateRates(Clock::time_point now) {
   const double window = std::chrono::duration<double>(now - rate_window_start_).count();
   if (window < 1.0) return;
   counters_.steps_per_second.store(static_cast<float>(rate_window_steps_ / window));
+  refreshStatusLine(now);
   rate_window_steps_ = 0;
   rate_window_start_ = now;
-  refreshStatusLine(now);
 }
 
 void SimLoop::refreshStatusLine(Clock::time_point now) {
@@ -322,8 +334,18 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
       counters_.frames_dropped.load(), rejections_.total());
   const float ratio = realtime_ratio_.load();
   if (ratio > 0.0f) line += fmt::format(", {:.2f} of real time", ratio);
-  if (session_.method() == sph::Method::Foveated)
+  if (session_.method() == sph::Method::Foveated) {
     line += fmt::format(", q {:.2f}, periphery gain {:.1f}", session_.quality(), session_.peripheryGain());
+    // Over the steps since the last logged status line: how often the gaze fell on visible water,
+    // and how often the water there was at the finest level.
+    if (gaze_steps_ > 0) {
+      line += fmt::format(", gaze on water in {:.0f} % of steps", 100.0 * gaze_on_water_steps_ / gaze_steps_);
+      if (gaze_on_water_steps_ > 0) {
+        line += fmt::format(", at {} there in {:.0f} %", sph::sizeClassName(sph::sizeLevel(0)),
+                            100.0 * gaze_finest_steps_ / gaze_on_water_steps_);
+      }
+    }
+  }
   if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";
   std::lock_guard lock(status_mutex_);
   status_line_ = std::move(line);

@@ -97,6 +97,8 @@ class SimLoop {
   Clock::time_point nextStepTime() const;
   void publish(Clock::time_point now);
   void fillCounters(gsph::v1::ServerStatus& status) const;
+  // After a step: where the foveated method's gaze point fell (the window's counts).
+  void countGazePoint();
   void updateRates(Clock::time_point now);
   void refreshStatusLine(Clock::time_point now);
   // After each governor window: the foveated method's periphery gain for the next.
@@ -128,6 +130,11 @@ class SimLoop {
   Clock::time_point next_status_{};
   Clock::time_point rate_window_start_{};
   std::int64_t rate_window_steps_ = 0;
+  // foveated, since the last logged status line: steps, those whose gaze point fell on visible
+  // water, and of those the ones that found it at the finest level (AdaptiveStats::fovea_level).
+  std::int64_t gaze_steps_ = 0;
+  std::int64_t gaze_on_water_steps_ = 0;
+  std::int64_t gaze_finest_steps_ = 0;
   // The real-time governor's window: where it started (wall, sim) and the steps' wall time in it.
   RealtimeGovernor governor_;
   Clock::time_point governor_window_start_{};

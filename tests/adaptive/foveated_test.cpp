@@ -237,6 +237,25 @@ TEST(Foveated, ShallowWaterOnTheFloorKeepsItsVolume) {
   EXPECT_LT(std::abs(swell), 0.02);
 }
 
+// The real-time governor's periphery gain coarsens the water around the gaze, not the particle the
+// gaze falls on: at g = 16 that particle stays as fine as g = 1 allows it (LARGE or finer in this
+// view, where the eye allows a particle a degree off the gaze L3 at that gain).
+TEST(Foveated, ThePeripheryGainSparesTheGazePoint) {
+  sph::Scene scene = surgeScene("pbf");
+  scene.adaptive.foveated_periphery_gain = 16.0;
+  Rig rig = foveatedRig(scene);
+  int on_water = 0;
+  for (int s = 0; s < 60; ++s) {
+    rig.controller->setGaze(s < 40 ? gazeAt(0.3, 0.6) : gazeAt(0.62, 0.55));
+    rig.sim->step();
+    const int level = rig.controller->lastStats().fovea_level;
+    if (s < 42 || level < 0) continue;  // the saccade's first frames; the gaze off the water
+    ++on_water;
+    EXPECT_LE(level, 1) << "frame " << s << ": the gaze point coarsened with the periphery";
+  }
+  EXPECT_GT(on_water, 10) << "the gaze should fall on the water after the saccade";
+}
+
 // After a saccade across the water, every seen particle near the new gaze point is as fine as
 // the eye resolves there (the finest level at the gaze point itself) within three frames.
 TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {

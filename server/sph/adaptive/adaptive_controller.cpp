@@ -84,6 +84,7 @@ void AdaptiveController::apply(Simulation& sim) {
     }
     stats_.visible = view.visible;
     stats_.over_budget = view.over_budget;
+    stats_.fovea_level = view.fovea_level;
     return;
   }
   finish(sim, decideThesis(sim, mode), mode);

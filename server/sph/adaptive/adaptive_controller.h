@@ -25,7 +25,8 @@ struct AdaptiveStats {
   // foveated: what the eye saw (adaptive/foveated.h); zero for the thesis's methods.
   int visible = 0;
   int over_budget = 0;
-  double gaze_x = 0.5;  // the gaze point the step used (normalized, origin top left)
+  int fovea_level = -1;  // the level at the gaze point (FoveatedView::fovea_level)
+  double gaze_x = 0.5;   // the gaze point the step used (normalized, origin top left)
   double gaze_y = 0.5;
   double gaze_age_s = 0.0;
 };

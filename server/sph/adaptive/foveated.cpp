@@ -94,10 +94,16 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   scratch.finest_near.resize(n);
   const float last_fovea = scratch.fovea_depth;
   float fovea = std::numeric_limits<float>::infinity();  // the threads' nearest, combined
+  // The visible particle the gaze falls on: of those whose disc covers the gaze point the nearest
+  // the eye (ties to the lower index), combined.
+  float gazed_depth = std::numeric_limits<float>::infinity();
+  std::size_t gazed = n;
   int split_wanted = 0, merge_wanted = 0, visible = 0, over_budget = 0, still_coarse = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted, visible, over_budget, still_coarse)
   {
     float nearest = std::numeric_limits<float>::infinity();
+    float own_gazed_depth = std::numeric_limits<float>::infinity();
+    std::size_t own_gazed = n;
     const ThreadShare share = threadShare(n);
     // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
     // nearest water at the gaze point.
@@ -114,12 +120,27 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       scratch.depth[i] = depth;
       scratch.visible[i] = static_cast<std::int8_t>(on_screen && !hidden);
       const float inf = std::numeric_limits<float>::infinity();
-      scratch.allowed[i] = disc.in_front ? q * (1.0f + periphery_gain * mar_gain * e) : inf;
+      // The periphery gain spares the particle the gaze falls on (its disc, of this angular radius
+      // on the display near the line of sight, covers the gaze point): the governor coarsens the
+      // periphery, never the gaze point.
+      const float disc_deg = static_cast<float>(kDegrees) * 2.0f * tan_half * disc.radius;
+      const bool gazed_on = e <= disc_deg;
+      scratch.allowed[i] = disc.in_front ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
       scratch.budget[i] = disc.in_front ? q * (1.0f + mar_gain * e) : inf;
       if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
+      if (on_screen && !hidden && gazed_on && depth < own_gazed_depth) {  // ascending i: a tie keeps the lower index
+        own_gazed_depth = depth;
+        own_gazed = i;
+      }
     }
 #pragma omp critical(sph_fovea_depth)
-    fovea = std::min(fovea, nearest);
+    {
+      fovea = std::min(fovea, nearest);
+      if (own_gazed_depth < gazed_depth || (own_gazed_depth == gazed_depth && own_gazed < gazed)) {
+        gazed_depth = own_gazed_depth;
+        gazed = own_gazed;
+      }
+    }
 #pragma omp barrier
     // The water at the gaze point: this step's where the gaze falls on water, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
@@ -204,6 +225,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   view.over_budget = over_budget;
   view.still_coarse = still_coarse;
   view.fovea_depth = scratch.fovea_depth;
+  view.fovea_level = gazed < n ? classIndex(p.size_class[gazed]) - (out[gazed] == kSplit) : -1;
   return {split_wanted, merge_wanted};
 }
 

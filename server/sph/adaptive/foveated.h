@@ -40,6 +40,10 @@ struct FoveatedView {
   int over_budget = 0;
   int still_coarse = 0;      // particles more than one level coarser than their target
   float fovea_depth = 0.0f;  // distance of the water at the gaze point, metres
+  // The level the eye finds at the gaze point once this decision's splits are made: of the visible
+  // particle nearest the eye whose disc covers the gaze point; -1 where the gaze falls on no
+  // visible water.
+  int fovea_level = -1;
 };
 
 // Per-particle scratch of the decision, kept between steps so the step does not allocate.

@@ -54,9 +54,10 @@ struct AdaptiveConfig {
   // wide as a finest particle at the gaze point, MAR(e) = w0 + m e the eye's minimum angle of
   // resolution at eccentricity e (Guenter et al. 2012: w0 about 1/48 degree, m 0.022-0.028).
   double foveated_quality = 1.0;  // q >= 1: coarser everywhere as it grows
-  // g >= 1 multiplies the eccentricity term: q (1 + g m e / w0). The real-time governor's knob
-  // (server/app/realtime_governor.h): it coarsens the periphery and leaves the gaze point at q's
-  // level. The perceptual budget is always measured at g = 1.
+  // g >= 1 multiplies the eccentricity term: q (1 + g m e / w0), except for the particle the gaze
+  // falls on. The real-time governor's knob (server/app/realtime_governor.h): it coarsens the
+  // periphery and leaves the gaze point as at g = 1. The perceptual budget is always measured at
+  // g = 1.
   double foveated_periphery_gain = 1.0;
   double foveated_mar_w0_deg = 1.0 / 48.0;  // w0, degrees
   double foveated_mar_slope = 0.022;        // m, degrees of MAR per degree of eccentricity
