@@ -70,6 +70,42 @@ TEST(SplitMerge, SplitKeepsMassMomentumAndCentreOfMass) {
   }
 }
 
+// In a box corner the walls cut every axis short; the children of the incompressible solvers'
+// roomiest axis still land a parent radius apart (one at the parent's centre, one towards the
+// box's inside), never on one point, and inside the box.
+TEST(SplitMerge, InABoxCornerTheChildrenLandAParentRadiusApart) {
+  sph::Scene scene = poolScene(0.3, 0.3, 1500);
+  ASSERT_TRUE(sph::presetByName("pbf", scene.params));
+  scene.boundary.box.max.y() = 0.6;
+  sph::Simulation sim(scene, sph::SizeClass::Large);
+  for (int s = 0; s < 5; ++s) sim.step();
+  sph::ParticleSet& p = sim.particles();
+  const sph::BoxState box = sim.boxNow();
+  std::size_t corner = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    if ((p.position[i] - box.min).norm() < (p.position[corner] - box.min).norm()) corner = i;
+  }
+  for (int a = 0; a < 3; ++a) ASSERT_LT(p.position[corner][a] - box.min[a], p.radius[corner]) << "axis " << a;
+  const float parent_radius = p.radius[corner];
+  const double mass_before = p.totalMass();
+  std::vector<std::int8_t> decision(p.size(), sph::kRemain);
+  decision[corner] = sph::kSplit;
+  std::vector<std::uint8_t> keep;
+  std::vector<std::uint32_t> slots;
+  const auto counts = sph::applySplitMerge(sim, decision, std::vector<std::int32_t>(p.size(), -1), keep, slots);
+  ASSERT_EQ(counts.splits, 1);
+  const sph::Vec3 a = p.position[corner];
+  const sph::Vec3 b = p.position[p.size() - 1];
+  EXPECT_GT((a - b).norm(), 0.9f * parent_radius);
+  EXPECT_EQ(p.totalMass(), mass_before);
+  for (const std::size_t i : {corner, p.size() - 1}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_GE(p.position[i][axis], box.min[axis] + p.radius[i] - 1e-6f);
+      EXPECT_LE(p.position[i][axis], box.max[axis] - p.radius[i] + 1e-6f);
+    }
+  }
+}
+
 TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
   sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::SizeClass::Small);
   prepare(sim);

@@ -79,6 +79,12 @@ Vec3 childOffsetInBox(const Vec3& centre, const Vec3& dir, const BoxState& box, 
   return symmetricReach(centre, along, box, margin, wanted) * along;
 }
 
+Vec3 awayFromNearestFaces(const Vec3& centre, const BoxState& box) {
+  Vec3 away;
+  for (int a = 0; a < 3; ++a) away[a] = centre[a] - box.min[a] <= box.max[a] - centre[a] ? 1.0f : -1.0f;
+  return away / std::sqrt(3.0f);
+}
+
 Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::size_t i, const BoxState& box,
                          float margin, float wanted) {
   static const std::array<Vec3, kCandidates> candidates = candidateAxes();

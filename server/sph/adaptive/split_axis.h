@@ -27,4 +27,8 @@ Vec3 childOffsetInBox(const Vec3& centre, const Vec3& dir, const BoxState& box, 
 Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::size_t i, const BoxState& box,
                          float margin, float wanted);
 
+// The unit diagonal from `centre` away from the nearest face on every axis: into the box from a
+// corner, where walls on three sides leave two children no room about their parent's centre.
+Vec3 awayFromNearestFaces(const Vec3& centre, const BoxState& box);
+
 }  // namespace sph

@@ -135,7 +135,8 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   counts.splits = static_cast<int>(splits);
 
   // Split, eqs. (3.37)-(3.39), every attribute by its rule (particle_attributes.h); the children
-  // sit at +- half the parent radius along the split axis, so the centre of mass stays put.
+  // sit at +- half the parent radius along the split axis, so the centre of mass stays put (but
+  // for incompressible water in a box corner, below).
   // They are then 0.78 of their own lattice spacing apart (r = 0.62 spacings, eq. 3.7; a level's
   // spacing is 1.26 of the level below's), closer than a lattice's neighbours: the incompressible solvers then move
   // the fresh particles apart by position (local_placement.h). The roomiest axis reads the
@@ -159,6 +160,15 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
       const Vec3 offset = p.position[c];
       Vec3 a = p.position[i] + offset;
       Vec3 b = p.position[i] - offset;
+      const float wanted = 0.5f * p.radius[i];
+      if (roomiest && offset.squaredNorm() < 0.25f * wanted * wanted) {
+        // Walls on three sides (a box corner) cut every axis short: children about the centre
+        // would land on one point, and the doubled mass there kicks the water. One child keeps
+        // the parent's centre, the other goes the children's distance into the box; the centre
+        // of mass moves half a parent radius inwards.
+        a = p.position[i] + 2.0f * wanted * awayFromNearestFaces(p.position[i], box);
+        b = p.position[i];
+      }
       const SizeClass level = below(i);
       keepOutOfObstacles(boundary, box, radiusOf(level), a);
       keepOutOfObstacles(boundary, box, radiusOf(level), b);

@@ -36,7 +36,8 @@ struct SplitMergeCounts {
 
 // Splits every particle above SMALL flagged SPLIT into two children of the level below, placed
 // symmetrically about its centre (split_axis.h: on incompressible water along the axis with the most room among its
-// neighbours, on the thesis's along a direction drawn from its id; deterministic), and merges
+// neighbours, or from a box corner one at the centre and one into the box; on the thesis's along a
+// direction drawn from its id; deterministic), and merges
 // every mutual pair into one of the level above at the pair's midpoint with the mean velocity. Children
 // and merged particles stay inside the box with their radius. `keep` and `split_list` are scratch.
 SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> decision,
