@@ -89,12 +89,12 @@ if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
   "$bin/sph_viewer" --report 2>&1 | tee "$out_dir/viewer.log"
 else
   echo "run_main: no display: rendering headless under Xvfb for $seconds s of wall time"
-  # Software GL renders on the cores the server steps on: five pictures a second show the run, and
+  # Software GL renders on the cores the server steps on: two pictures a second show the run, and
   # the rest of the viewer's share goes to the simulation.
   # -noreset: a reset when the viewer disconnects signals xvfb-run in its clean-up, which then can
   # fail with exit code 5 after the viewer succeeded (seen in CI).
   xvfb-run -a -s "-screen 0 1280x720x24 -noreset" \
-    "$bin/sph_viewer" --snapshot "$out_dir/viewer.png" --duration "$seconds" --max-fps 5 --report \
+    "$bin/sph_viewer" --snapshot "$out_dir/viewer.png" --duration "$seconds" --max-fps 2 --report \
     >"$out_dir/viewer.log" 2>&1 || { echo "run_main: the viewer failed; see $out_dir/viewer.log" >&2; tail -n 20 "$out_dir/viewer.log" >&2; exit 1; }
   echo "run_main: picture of the last frame: $out_dir/viewer.png"
 fi
