@@ -150,10 +150,6 @@ class Sequences(unittest.TestCase):
         self.assertEqual((tracker.gaps, tracker.restarts), (0, 1))
 
 
-if __name__ == "__main__":
-    unittest.main()
-
-
 class NewestOnly(unittest.TestCase):
     def test_a_burst_ends_on_its_last_frame(self):
         # Over real loopback sockets: the conflating subscriber must reach the burst's last frame
@@ -176,3 +172,7 @@ class NewestOnly(unittest.TestCase):
                     last = frame.message.sequence
         finally:
             pub.close(linger=0)
+
+
+if __name__ == "__main__":
+    unittest.main()
