@@ -92,6 +92,12 @@ struct ParticleAttributes {
   // `foveated_merge_hold_s` of them (adaptive/foveated.h). A split's children and a merged
   // particle start again from 0.
   std::vector<std::uint16_t> coarsen_wait;
+  // pbf, a level change in still water (solvers/pbf/still_water_changes.h): how much denser
+  // (negative: less dense) than rest density the density constraint leaves the particle, kg/m^3,
+  // fading frame by frame; and the frames left in which a still particle keeps only part of the
+  // speed a step gives it.
+  std::vector<float> density_offset;
+  std::vector<std::uint8_t> still_damping;
 };
 
 // The values of ParticleAttributes::placed.
@@ -100,6 +106,7 @@ enum PlacedMark : std::uint8_t {
   kPlacedThisFrame = 1,  // placed by the adaptive step after the last frame (SplitRule::kMark, MergeRule::kMark)
   kPlacedEarlier = 2,    // pbf: placed, a frame run on it, its constraint not yet holding it
   kNearPlacement = 3,    // pbf: a neighbour of this frame's fresh placements
+  kPlacedStill = 4,      // pbf: placed after the last frame in still water, left where it was put
 };
 
 namespace detail {
@@ -140,7 +147,12 @@ inline const auto kParticleAttributes = std::make_tuple(
     AttributeSpec<std::uint8_t>{&ParticleAttributes::placed, "placed", std::uint8_t{0}, SplitRule::kMark,
                                 MergeRule::kMark},
     AttributeSpec<std::uint16_t>{&ParticleAttributes::coarsen_wait, "coarsen_wait", std::uint16_t{0}, SplitRule::kReset,
-                                 MergeRule::kReset});
+                                 MergeRule::kReset},
+    // An intensive quantity: the children and the merged particle keep the water's value there.
+    AttributeSpec<float>{&ParticleAttributes::density_offset, "density_offset", 0.0f, SplitRule::kCopy,
+                         MergeRule::kAverage},
+    AttributeSpec<std::uint8_t>{&ParticleAttributes::still_damping, "still_damping", std::uint8_t{0}, SplitRule::kCopy,
+                                MergeRule::kMax});
 
 // Every vector is the same size, whatever its element type: a member of ParticleAttributes that is
 // missing from the table (or listed twice) changes one side of this and stops the build.

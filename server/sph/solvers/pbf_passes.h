@@ -61,6 +61,9 @@ struct PbfArrays {
   // as they are: the local iterations around freshly placed particles (pbf_solver.cpp).
   const std::uint32_t* only = nullptr;
   std::size_t only_count = 0;
+  // When set, particle i's constraint holds it at rho0 + density_offset[i] instead of rho0 (a
+  // level change in still water: pbf/still_water_changes.h).
+  const float* density_offset = nullptr;
 };
 
 struct PbfConstants {

@@ -30,12 +30,14 @@ constexpr float kPlacedDensity = 1.01f;
 // kNearPlacement: what the constraint does to them then answers the placement too (without it the
 // unmerged neighbours of a merge kicked a resting pool).
 
-// Mean of rho / rho0 - 1 over the particles, where positive: what the tolerance bounds. Summed in
-// a fixed order (ordered_sum.h), so the count of iterations it decides is the same for any thread count.
-double meanCompression(const ParticleSet& p, float rest_density, std::vector<double>& partials) {
+// Mean of rho / rho0 - 1 over the particles, where positive, as the constraint sees it (less the
+// offsets, when `offsets`): what the tolerance bounds. Summed in a fixed order (ordered_sum.h), so
+// the count of iterations it decides is the same for any thread count.
+double meanCompression(const ParticleSet& p, float rest_density, bool offsets, std::vector<double>& partials) {
   if (p.size() == 0) return 0.0;
   const double sum = orderedSum(p.size(), partials, [&](std::size_t i) {
-    return std::max(static_cast<double>(p.density[i]) / rest_density - 1.0, 0.0);
+    const double density = static_cast<double>(p.density[i]) - (offsets ? p.density_offset[i] : 0.0f);
+    return std::max(density / rest_density - 1.0, 0.0);
   });
   return sum / static_cast<double>(p.size());
 }
@@ -99,6 +101,7 @@ void PbfSolver::advance(const FrameContext& frame) {
     if (p.placed[i] == 0) continue;
     p.placed[i] = p.placed[i] == kNearPlacement || p.density[i] <= in_place ? 0 : kPlacedEarlier;
   }
+  StillWaterChanges::fade(p);
 }
 
 void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool first, bool last) {
@@ -109,6 +112,8 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
     v->reserve(room);
     v->resize(n);
   }
+  start_speed_.reserve(room);
+  start_speed_.resize(n);
   lambda_.resize(n);
   lambda_step_.resize(n);
   constants_.box = frame.scene.boundary.stateAt(t0 + dt);
@@ -122,6 +127,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     old_position_[i] = p.position[i];
+    start_speed_[i] = p.velocity[i].norm();
     p.velocity[i] += dt * gravity;
     Vec3 x = p.position[i] + dt * p.velocity[i];
     Vec3 unused_velocity = Vec3::Zero();
@@ -135,17 +141,22 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
   markNearPlacements(frame.grid, p);
   timer.stop();
 
-  // The frame's fresh placements to their places (local_placement.h), by position: their start
-  // positions move with them, so the step's velocities do not see the placement.
+  // The frame's fresh placements in moving water to their places (local_placement.h), by
+  // position: their start positions move with them, so the step's velocities do not see the
+  // placement. Those in still water stay where they were put, and the water takes them up slowly
+  // (still_water_changes.h).
+  PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
   if (first) {
     timer.start(frame.timings.density_pressure_ms);
+    const bool placed = still_changes_.markStill(p, frame.grid, start_speed_);
     frame.stats.placement_iterations +=
         placement_.placeFresh(p, frame.grid, LocalPlacement::Grid::kCurrent, constants_,
                               kPlacedCompression * constants_.rest_density, kPlacedIterations, old_position_);
+    if (placed) still_changes_.holdChanges(p, frame.grid, start_speed_, a, constants_);
     timer.stop();
   }
-
-  PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
+  const bool offsets = StillWaterChanges::active(p);
+  if (offsets) a.density_offset = p.density_offset.data();
   // Each lambda pass keeps the pairs' kernel gradient factor for the correction that follows it
   // at the same positions (a float a pair; keeping the three components of grad W cost more than
   // evaluating them again: docs/performance.md).
@@ -176,7 +187,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
     forms.lambda(a, constants_, frame.grid);
     more = iterations + 1 < least ||
            (iterations + 1 < most && params.pbf_density_tolerance > 0.0 &&
-            meanCompression(p, constants_.rest_density, sum_partials_) > params.pbf_density_tolerance);
+            meanCompression(p, constants_.rest_density, offsets, sum_partials_) > params.pbf_density_tolerance);
     a.position_next = next_position_.data()->data();
     forms.correct(a, constants_, frame.grid, iterations == 0 && constants_.tensile_k > 0.0f);
     p.position.swap(next_position_);
@@ -189,13 +200,15 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
   // the adaptive step placed (particle_attributes.h, `placed`) may be slowed or turned by its
   // correction but never made faster than its predicted velocity: the constraint moving a split's
   // children apart is placement, not motion, and made velocity it kicks a resting pool
-  // (SplitMerge.SplittingOrMergingARestingPbfPoolDoesNotKickIt).
+  // (SplitMerge.SplittingOrMergingARestingPbfPoolDoesNotKickIt). Still water near a level change
+  // keeps only part of it (still_water_changes.h).
   timer.start(frame.timings.accel_integrate_collide_ms);
   const float inv_dt = 1.0f / dt;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 step = p.position[i] - old_position_[i];
     Vec3 velocity = step * inv_dt;
+    if (StillWaterChanges::damps(p, i, start_speed_[i])) velocity *= StillWaterChanges::kStillDamping;
     if (p.placed[i] != 0) {
       const float predicted = p.velocity[i].norm();
       const float speed = velocity.norm();

@@ -16,6 +16,7 @@
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
+#include "sph/solvers/pbf/still_water_changes.h"
 #include "sph/solvers/pbf_passes.h"
 #include "sph/solvers/velocity_passes.h"
 
@@ -44,6 +45,8 @@ class PbfSolver : public FluidSolver {
   std::vector<float> lambda_, lambda_step_;
   std::vector<float> pair_g_;  // PbfArrays::pair_g, at the grid's slots
   LocalPlacement placement_;
+  StillWaterChanges still_changes_;
+  std::vector<float> start_speed_;    // each particle's speed at the step's start
   std::vector<float> pressure_sum_;   // the frame's steps' pressures, summed
   std::vector<double> sum_partials_;  // orderedSum's scratch
 };
