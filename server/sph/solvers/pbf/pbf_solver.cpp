@@ -95,11 +95,11 @@ void PbfSolver::advance(const FrameContext& frame) {
     p.pressure_term[i] = p.pressure[i] / (p.density[i] * p.density[i]);
   }
   // A placed particle stays placed, frame after frame, until the constraint holds it near rest
-  // density: the rest of its correction is placement too.
+  // density (less its offset: still_water_changes.h): the rest of its correction is placement too.
   const auto in_place = static_cast<float>(kPlacedDensity * frame.scene.params.rest_density);
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.placed[i] == 0) continue;
-    p.placed[i] = p.placed[i] == kNearPlacement || p.density[i] <= in_place ? 0 : kPlacedEarlier;
+    p.placed[i] = p.placed[i] == kNearPlacement || p.density[i] - p.density_offset[i] <= in_place ? 0 : kPlacedEarlier;
   }
   StillWaterChanges::fade(p);
 }

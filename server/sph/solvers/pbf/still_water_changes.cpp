@@ -14,9 +14,10 @@ bool StillWaterChanges::markStill(ParticleSet& p, const NeighborGrid& grid, std:
   bool any = false;
   constexpr auto kMark = static_cast<std::uint8_t>(kDampedFrames);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.placed[i] == kNotPlaced) continue;
-    any = true;
-    if (p.placed[i] == kPlacedThisFrame && start_speed[i] < kStillSpeed) p.placed[i] = kPlacedStill;
+    const bool taking_up = std::abs(p.density_offset[i]) > kTakingUp;
+    if (p.placed[i] == kNotPlaced && !taking_up) continue;
+    any = any || p.placed[i] != kNotPlaced;
+    if (p.placed[i] == kPlacedThisFrame && still(start_speed[i])) p.placed[i] = kPlacedStill;
     // A placed particle's neighbours are already marked kNearPlacement: with theirs, two hops.
     p.still_damping[i] = kMark;
     for (const std::uint32_t j : grid.neighbors(i)) p.still_damping[j] = kMark;
@@ -34,7 +35,7 @@ void StillWaterChanges::holdChanges(ParticleSet& p, const NeighborGrid& grid, st
   held_.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
     const bool changed = p.placed[i] != kNotPlaced;
-    if (changed && start_speed[i] < kStillSpeed) held_.push_back(static_cast<std::uint32_t>(i));
+    if (changed && still(start_speed[i])) held_.push_back(static_cast<std::uint32_t>(i));
   }
   if (held_.empty()) return;
   // Their densities where they now stand.

@@ -10,8 +10,9 @@
 //   it as an offset of its constraint's rest density (ParticleAttributes::density_offset), which
 //   fades by 1 / kOffsetFadeFrames a frame: the water takes the change up over a third of a
 //   second;
-// - still particles within two neighbour hops of the change, until its particles are in place
-//   and kDampedFrames after, keep kStillDamping of the speed each step gives them
+// - still particles within two neighbour hops of the change, while its particles are placed or
+//   hold an offset beyond kTakingUp and kDampedFrames after, keep kStillDamping of the speed each
+//   step gives them
 //   (ParticleAttributes::still_damping): they settle without building the momentum that would
 //   carry them past their new places.
 // Water moving faster than kStillSpeed is untouched: there the placement moves the change into
@@ -40,6 +41,9 @@ class StillWaterChanges {
   // An offset holds at most this share of rest density either way.
   static constexpr float kOffsetLimit = 0.3f;
   static constexpr int kDampedFrames = 80;
+  // An offset larger than this (kg/m^3, either way) is still being taken up: its particle and
+  // its neighbours stay marked for damping.
+  static constexpr float kTakingUp = 1.0f;
   static constexpr float kStillDamping = 0.8f;
 
   // Whether any particle holds an offset or a damping mark: the pbf passes read the offsets
@@ -49,9 +53,9 @@ class StillWaterChanges {
   // In the frame's first step, after the prediction, the neighbour grid and the near-placement
   // marks, before the local placement: the fresh placements whose speed at the step's start
   // (`start_speed`, per particle) is still are marked kPlacedStill, which the placement passes
-  // over; every placed particle (fresh, or not yet in place) and its neighbours are marked for
-  // damping. Keeps the densities the frame starts with for holdChanges. Returns whether any
-  // particle is placed.
+  // over; every placed particle (fresh, or not yet in place) or one whose offset is still being
+  // taken up, and its neighbours, are marked for damping. Keeps the densities the frame starts
+  // with for holdChanges. Returns whether any particle is placed.
   bool markStill(ParticleSet& p, const NeighborGrid& grid, std::span<const float> start_speed);
 
   // After the local placement, where markStill found any placed: every still particle that is
@@ -63,10 +67,12 @@ class StillWaterChanges {
   void holdChanges(ParticleSet& p, const NeighborGrid& grid, std::span<const float> start_speed, PbfArrays& a,
                    const PbfConstants& c);
 
-  // Whether particle i keeps only kStillDamping of the velocity a step gives it: marked, and
-  // still at the step's start.
+  // Whether particle i is still: slower than kStillSpeed at the step's start.
+  static bool still(float start_speed) { return start_speed < kStillSpeed; }
+
+  // Whether particle i keeps only kStillDamping of the velocity a step gives it: marked, and still.
   static bool damps(const ParticleSet& p, std::size_t i, float start_speed) {
-    return p.still_damping[i] > 0 && start_speed < kStillSpeed;
+    return p.still_damping[i] > 0 && still(start_speed);
   }
 
   // After the frame: the offsets fade, the damping marks count down.
