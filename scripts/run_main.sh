@@ -10,7 +10,7 @@
 #                            [--seconds S] [--bridge "ARGS"] [--out DIR]
 #
 #   --scene NAME     dambreak (default), dambreak_obstacles, large_box, small_box, wave
-#   --method M       gaze (default), regular, surface, hybrid or foveated
+#   --method M       foveated (default), regular, surface, gaze or hybrid
 #   --seconds S      headless only: wall time before the picture is taken (default 20)
 #   --bridge "ARGS"  gaze_bridge options instead of the recording, e.g.
 #                    --bridge "--source gazepoint --gazepoint-host 192.168.1.20"
@@ -25,7 +25,7 @@ usage_error() { echo "run_main: $1 (see bash scripts/run_main.sh --help)" >&2; e
 need_value() { [ $# -ge 2 ] && [ -n "$2" ] && [ "${2#--}" = "$2" ] || usage_error "$1 needs a value"; }
 
 scene=dambreak
-method=gaze
+method=foveated
 seconds=20
 bridge_args=""
 out_dir=main_out

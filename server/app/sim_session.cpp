@@ -61,6 +61,10 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
     chosen = *method;
   } else if (!sph::methodByName(scene.method, chosen)) {
     throw scene::SceneError(scene.source + ": unknown method '" + scene.method + "'");
+  } else if (chosen == sph::Method::Foveated && scene.params.solver == "thesis") {
+    // The thesis's solver knows two classes: there a scene's foveated method gives way to the
+    // thesis's own gaze method (a method the caller names is refused instead).
+    chosen = sph::Method::Gaze;
   }
   start(scene, chosen, withOverrides(scene.adaptive, overrides_));
   scene_name_ = scene_name;

@@ -112,7 +112,10 @@ BenchPlan planBench(const BenchRequest& request) {
     const sph::Scene& sc = plan.scenes[k];
     // A scene's presets go into one group, so that they take turns too.
     std::vector<PlannedRun>& runs = k % presets.size() == 0 ? plan.runs.emplace_back() : plan.runs.back();
-    for (const std::string& method : methods.empty() ? std::vector<std::string>{sc.method} : methods) {
+    // Each scene's own method, or where the preset's solver lacks its levels (foveated on the
+    // thesis's) the thesis's gaze method, as the server does.
+    const std::string own = solverHasLevelsOf(sc, sc.method) ? sc.method : "gaze";
+    for (const std::string& method : methods.empty() ? std::vector<std::string>{own} : methods) {
       // 'all' leaves out the methods whose levels the preset's solver does not have (foveated on the
       // thesis's); named, such a method is an error when its run starts.
       if (request.methods == "all" && !solverHasLevelsOf(sc, method)) continue;
