@@ -232,7 +232,7 @@ TEST(Foveated, ATankUnderASweepingGazeWithAMergeHoldStaysAtRest) {
 // LARGE and finer, so it keeps its volume (a layer of coarse particles reads a low density and
 // swells the water's sum m / rho, by 38 % without the rule; the water starts at the coarsest
 // level). A film a particle thick reads a few per cent light as its particles lie: settled from
-// its splits in still water (pbf/still_water_changes.h), 3.5 %; shaken into place, 1-4 %.
+// its splits in still water (pbf/still_water_changes.h), 3.7 %; shaken into place, 1-4 %.
 TEST(Foveated, ShallowWaterOnTheFloorKeepsItsVolume) {
   sph::Scene scene = poolScene(0.5, 0.5, 360);  // about 1.1 LARGE layers
   ASSERT_TRUE(sph::presetByName("pbf", scene.params));

@@ -34,8 +34,7 @@ void StillWaterChanges::holdChanges(ParticleSet& p, const NeighborGrid& grid, st
   held_.reserve(p.capacity());
   held_.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool changed = p.placed[i] != kNotPlaced;
-    if (changed && still(start_speed[i])) held_.push_back(static_cast<std::uint32_t>(i));
+    if (p.placed[i] != kNotPlaced && still(start_speed[i])) held_.push_back(static_cast<std::uint32_t>(i));
   }
   if (held_.empty()) return;
   // Their densities where they now stand.

@@ -12,9 +12,8 @@
 //   second;
 // - still particles within two neighbour hops of the change, while its particles are placed or
 //   hold an offset beyond kTakingUp and kDampedFrames after, keep kStillDamping of the speed each
-//   step gives them
-//   (ParticleAttributes::still_damping): they settle without building the momentum that would
-//   carry them past their new places.
+//   step gives them (ParticleAttributes::still_damping): they settle without building the
+//   momentum that would carry them past their new places.
 // Water moving faster than kStillSpeed is untouched: there the placement moves the change into
 // place, and the Martin & Moyce fronts move by tenths of a per cent with this.
 #pragma once
@@ -67,7 +66,7 @@ class StillWaterChanges {
   void holdChanges(ParticleSet& p, const NeighborGrid& grid, std::span<const float> start_speed, PbfArrays& a,
                    const PbfConstants& c);
 
-  // Whether particle i is still: slower than kStillSpeed at the step's start.
+  // Whether a particle whose speed at the step's start is `start_speed` is still.
   static bool still(float start_speed) { return start_speed < kStillSpeed; }
 
   // Whether particle i keeps only kStillDamping of the velocity a step gives it: marked, and still.
