@@ -106,7 +106,6 @@ enum PlacedMark : std::uint8_t {
   kPlacedThisFrame = 1,  // placed by the adaptive step after the last frame (SplitRule::kMark, MergeRule::kMark)
   kPlacedEarlier = 2,    // pbf: placed, a frame run on it, its constraint not yet holding it
   kNearPlacement = 3,    // pbf: a neighbour of this frame's fresh placements
-  kPlacedStill = 4,      // pbf: placed after the last frame in still water, left where it was put
 };
 
 namespace detail {

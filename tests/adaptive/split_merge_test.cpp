@@ -274,17 +274,15 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   expectSettlesAgain();
 }
 
-// pbf: the changes in still water stay where they were put and the constraint holds them at the
-// density the change gave them, fading (still_water_changes.h), so the largest density error the
-// constraint sees rises by at most 5 %; the few in moving water are placed. The split step adds
-// about 0.025 m/s to the rms and the merge step 0.038: all the pool at once, every particle falls
-// towards the room the merges made, at the damped speed (the foveated method merges a few a
-// frame). Before the placement rule the split step threw the pool, which still moved 50 frames
-// later; before the neighbours of a merge counted as placed the merge step threw it too. In the
-// frames after a whole split or merge the pool breathes (both solvers, more than a pool without a
-// split); the 0.2 m/s peak keeps it from growing.
+// pbf: the split raises the largest density error (as the constraint sees it: in still water it
+// holds what the placement leaves, still_water_changes.h) by at most 5 %, because the placement
+// moves the compressed children before the constraint (without it the error grows well past
+// that), and adds little kick. Before the placement rule the split step threw the pool, which
+// still moved 50 frames later; before the neighbours of a merge counted as placed the merge step
+// threw it too. In the frames after a whole split or merge the pool breathes (both solvers, more
+// than a pool without a split); the 0.2 m/s peak keeps it from growing.
 TEST(SplitMerge, SplittingOrMergingARestingPbfPoolDoesNotKickIt) {
-  expectSplittingOrMergingARestingPoolDoesNotKickIt("pbf", {6, 0.05, 0.05f, 0.2});
+  expectSplittingOrMergingARestingPoolDoesNotKickIt("pbf", {6, 0.03, 0.05f, 0.2});
 }
 
 // dfsph, from rest after 150 frames: without the placement the split step threw the pool. With it

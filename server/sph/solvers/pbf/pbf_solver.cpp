@@ -141,14 +141,14 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
   markNearPlacements(frame.grid, p);
   timer.stop();
 
-  // The frame's fresh placements in moving water to their places (local_placement.h), by
-  // position: their start positions move with them, so the step's velocities do not see the
-  // placement. Those in still water stay where they were put, and the water takes them up slowly
+  // The frame's fresh placements to their places (local_placement.h), by position: their start
+  // positions move with them, so the step's velocities do not see the placement. In still water
+  // the constraint then holds what the placement left, and the water takes it up slowly
   // (still_water_changes.h).
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
   if (first) {
     timer.start(frame.timings.density_pressure_ms);
-    const bool placed = still_changes_.markStill(p, frame.grid, start_speed_);
+    const bool placed = still_changes_.markDamped(p, frame.grid);
     frame.stats.placement_iterations +=
         placement_.placeFresh(p, frame.grid, LocalPlacement::Grid::kCurrent, constants_,
                               kPlacedCompression * constants_.rest_density, kPlacedIterations, old_position_);

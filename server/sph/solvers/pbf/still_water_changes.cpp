@@ -10,14 +10,13 @@ bool StillWaterChanges::active(const ParticleSet& p) {
          std::any_of(p.density_offset.begin(), p.density_offset.end(), [](float o) { return o != 0.0f; });
 }
 
-bool StillWaterChanges::markStill(ParticleSet& p, const NeighborGrid& grid, std::span<const float> start_speed) {
+bool StillWaterChanges::markDamped(ParticleSet& p, const NeighborGrid& grid) {
   bool any = false;
   constexpr auto kMark = static_cast<std::uint8_t>(kDampedFrames);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const bool taking_up = std::abs(p.density_offset[i]) > kTakingUp;
     if (p.placed[i] == kNotPlaced && !taking_up) continue;
     any = any || p.placed[i] != kNotPlaced;
-    if (p.placed[i] == kPlacedThisFrame && still(start_speed[i])) p.placed[i] = kPlacedStill;
     // A placed particle's neighbours are already marked kNearPlacement: with theirs, two hops.
     p.still_damping[i] = kMark;
     for (const std::uint32_t j : grid.neighbors(i)) p.still_damping[j] = kMark;

@@ -3,19 +3,18 @@
 // place within a frame, the neighbourhood's change of volume and of forces moves the whole water
 // above it, and every change stirs a resting tank (docs/fluids.md, "Changes in still water").
 // Orthmann & Kolb (2012) blend a new particle's contributions in over several steps; in pbf the
-// same is done in the constraint and the velocity update, per particle:
-// - a fresh placement in still water is left where the change put it (the local placement moves
-//   only those in moving water, local_placement.h);
-// - every placed particle in still water, and its neighbours, keeps the density the change gave
-//   it as an offset of its constraint's rest density (ParticleAttributes::density_offset), which
-//   fades by 1 / kOffsetFadeFrames a frame: the water takes the change up over a third of a
-//   second;
+// same is done in the constraint and the velocity update, per particle, after the local
+// placement (local_placement.h) has moved the fresh particles out of each other's way:
+// - every placed particle in still water, and its neighbours, keeps the density the change and
+//   the placement gave it as an offset of its constraint's rest density
+//   (ParticleAttributes::density_offset), which fades by 1 / kOffsetFadeFrames a frame: the water
+//   takes the change up over a third of a second;
 // - still particles within two neighbour hops of the change, while its particles are placed or
 //   hold an offset beyond kTakingUp and kDampedFrames after, keep kStillDamping of the speed each
 //   step gives them (ParticleAttributes::still_damping): they settle without building the
 //   momentum that would carry them past their new places.
-// Water moving faster than kStillSpeed is untouched: there the placement moves the change into
-// place, and the Martin & Moyce fronts move by tenths of a per cent with this.
+// Water moving faster than kStillSpeed is untouched (the Martin & Moyce fronts move by tenths of a
+// per cent with this).
 #pragma once
 
 #include <cstdint>
@@ -30,8 +29,8 @@ namespace sph {
 
 class StillWaterChanges {
  public:
-  // Water slower than this (m/s) at a step's start is still. Above the speed a particle reaches
-  // falling under the damping alone (kStillDamping / (1 - kStillDamping) g dt, 0.098 m/s at pbf's
+  // Water slower than this (m/s) at a step's start is still. Below the speed a particle reaches
+  // falling under the damping alone (kStillDamping / (1 - kStillDamping) g dt, 0.057 m/s at pbf's
   // 2.5 ms steps), so water that starts to fall is not held.
   static constexpr float kStillSpeed = 0.05f;
   // The offset falls by 1 / kOffsetFadeFrames a frame, and is dropped below kOffsetFloor (kg/m^3).
@@ -43,21 +42,19 @@ class StillWaterChanges {
   // An offset larger than this (kg/m^3, either way) is still being taken up: its particle and
   // its neighbours stay marked for damping.
   static constexpr float kTakingUp = 1.0f;
-  static constexpr float kStillDamping = 0.8f;
+  static constexpr float kStillDamping = 0.7f;
 
   // Whether any particle holds an offset or a damping mark: the pbf passes read the offsets
   // only then. Read from the particles, so a checkpoint restores it.
   static bool active(const ParticleSet& p);
 
   // In the frame's first step, after the prediction, the neighbour grid and the near-placement
-  // marks, before the local placement: the fresh placements whose speed at the step's start
-  // (`start_speed`, per particle) is still are marked kPlacedStill, which the placement passes
-  // over; every placed particle (fresh, or not yet in place) or one whose offset is still being
-  // taken up, and its neighbours, are marked for damping. Keeps the densities the frame starts
-  // with for holdChanges. Returns whether any particle is placed.
-  bool markStill(ParticleSet& p, const NeighborGrid& grid, std::span<const float> start_speed);
+  // marks, before the local placement: every placed particle (fresh, or not yet in place) or one
+  // whose offset is still being taken up, and its neighbours, are marked for damping. Keeps the
+  // densities the frame starts with for holdChanges. Returns whether any particle is placed.
+  bool markDamped(ParticleSet& p, const NeighborGrid& grid);
 
-  // After the local placement, where markStill found any placed: every still particle that is
+  // After the local placement, where markDamped found any placed: every still particle that is
   // placed (fresh, or not yet in place) or near a fresh placement adds the change of its density
   // since the frame's start to its offset, so that the constraint leaves it as the change (and,
   // while it is not in place, each frame's step) left it; a constraint pass over them alone
