@@ -6,6 +6,7 @@
 #include "app/adaptive_parameters.h"
 #include "net/peer_text.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_method.h"
 #include "sph/param_table.h"
 
 namespace app {
@@ -56,16 +57,9 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
   sph::Scene scene = scene::loadScene(scene_name, scene_dir_, preset_override_);
   std::map<std::string, double> unused;
   addSimParameters(sim_parameters_, unused, scene.params);
-  sph::Method chosen = sph::Method::Regular;
-  if (method) {
-    chosen = *method;
-  } else if (!sph::methodByName(scene.method, chosen)) {
-    throw scene::SceneError(scene.source + ": unknown method '" + scene.method + "'");
-  } else if (chosen == sph::Method::Foveated && scene.params.solver == "thesis") {
-    // The thesis's solver knows two classes: there a scene's foveated method gives way to the
-    // thesis's own gaze method (a method the caller names is refused instead).
-    chosen = sph::Method::Gaze;
-  }
+  // A method the caller names is refused where the solver lacks its levels; the scene's own gives
+  // way to gaze there.
+  const sph::Method chosen = method ? *method : scene::ownMethod(scene);
   start(scene, chosen, withOverrides(scene.adaptive, overrides_));
   scene_name_ = scene_name;
   scene_allow_paths_ = allow_paths;

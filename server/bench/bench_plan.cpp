@@ -7,8 +7,8 @@
 
 #include "bench/vtu_export.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_method.h"
 #include "sph/adaptive/method.h"
-#include "sph/solvers/fluid_solver_factory.h"
 
 namespace bench {
 
@@ -61,13 +61,11 @@ class SnapshotSeries {
   PvdIndex index_;
 };
 
-// Whether the scene's solver runs the method's levels. Every solver runs the thesis's two
-// classes, so only a method with more builds the solver to ask it.
+// Whether the scene's solver runs the method's levels (scene::solverHasLevelsOf); a name no
+// method has is left to fail when its run starts.
 bool solverHasLevelsOf(const sph::Scene& scene, const std::string& method) {
   sph::Method m;
-  if (!sph::methodByName(method, m)) return true;
-  const int levels_needed = sph::classIndex(sph::coarsestClass(m)) + 1;
-  return levels_needed <= sph::kThesisClassCount || levels_needed <= sph::makeFluidSolver(scene)->sizeLevels();
+  return !sph::methodByName(method, m) || scene::solverHasLevelsOf(scene, m);
 }
 
 }  // namespace
@@ -112,9 +110,8 @@ BenchPlan planBench(const BenchRequest& request) {
     const sph::Scene& sc = plan.scenes[k];
     // A scene's presets go into one group, so that they take turns too.
     std::vector<PlannedRun>& runs = k % presets.size() == 0 ? plan.runs.emplace_back() : plan.runs.back();
-    // Each scene's own method, or where the preset's solver lacks its levels (foveated on the
-    // thesis's) the thesis's gaze method, as the server does.
-    const std::string own = solverHasLevelsOf(sc, sc.method) ? sc.method : "gaze";
+    // Each scene's own method, as the server runs it (scene::ownMethod).
+    const std::string own = sph::methodName(scene::ownMethod(sc));
     for (const std::string& method : methods.empty() ? std::vector<std::string>{own} : methods) {
       // 'all' leaves out the methods whose levels the preset's solver does not have (foveated on the
       // thesis's); named, such a method is an error when its run starts.
