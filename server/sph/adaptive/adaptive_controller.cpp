@@ -71,9 +71,11 @@ void AdaptiveController::apply(Simulation& sim) {
     FoveatedView view;
     const DecisionCounts wanted = decideFoveated(sim, camera_, gx, gy, config_, false, decision_, foveated_, view);
     finish(sim, wanted, mode);
-    // A particle more than one level coarser than its target (the new fovea after a saccade)
-    // splits again within the step, level by level, so the eye finds the finest level at once
-    // rather than a level a frame later.
+    // Where the eye sees a particle more than one level coarser than it allows (the new fovea
+    // after a saccade), the step splits again, level by level, so the eye finds the finest level
+    // at once rather than a level a frame later. Water the eye does not see (hidden, off the
+    // display) and the rules that do not come from the eye (thin, shallow, graded) split a level
+    // a step: a further pass costs a neighbour search and a decision over all the water.
     for (int pass = 2; pass < kSizeClassCount && view.still_coarse > 0; ++pass) {
       sim.rebuildNeighbors();
       decision_.resize(sim.particles().size());

@@ -211,10 +211,10 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       }
       out[i] = decision;
       const int shown = level - (decision == kSplit);  // what the frame after this step shows
-      still_coarse += shown > target;
       if (scratch.visible[i] != 0) {
         ++visible;
         over_budget += width[shown] > budget;
+        still_coarse += shown > acuity;
       }
       split_wanted += decision == kSplit;
       merge_wanted += decision == kMerge;

@@ -38,7 +38,9 @@ struct FoveatedView {
   // Visible ones wider than q MAR(e) / MAR(0) finest particles at the gaze (at periphery gain 1,
   // whatever the gain in force) once this decision's splits are made.
   int over_budget = 0;
-  int still_coarse = 0;      // particles more than one level coarser than their target
+  // Visible ones coarser than the eye allows (at the periphery gain in force) once this
+  // decision's splits are made: a further split pass in the step is for them.
+  int still_coarse = 0;
   float fovea_depth = 0.0f;  // distance of the water at the gaze point, metres
   // The level the eye finds at the gaze point once this decision's splits are made: of the visible
   // particle nearest the eye whose disc covers the gaze point; -1 where the gaze falls on no
