@@ -10,7 +10,7 @@
 //   load(p, m), store(p, m, v)  p[l] on the live lanes (0 on dead lanes), written on the live lanes
 //   gather(m, j, base)     base[j_l] (0 on dead lanes)
 //   gatherTriples(m, list, base, x, y, z)  base[3 j + 0, 1, 2] for j = list[l] (0 on dead lanes)
-//   le, lt, neq            comparisons -> M; any(m); andMask(a, b)
+//   le, lt, eq, neq        comparisons -> M; any(m); andMask(a, b)
 //   select(m, a, b)        a where m, else b; maskz(m, a): a where m, else 0
 //   max, min, sqrt; sum(v), minOf(v): over the lanes
 #pragma once
@@ -42,6 +42,7 @@ struct ScalarLanes {
   }
   static M le(F a, F b) { return a <= b; }
   static M lt(F a, F b) { return a < b; }
+  static M eq(F a, F b) { return a == b; }
   static M neq(F a, F b) { return a != b; }
   static M andMask(M a, M b) { return a && b; }
   static bool any(M m) { return m; }
