@@ -129,7 +129,7 @@ void SimLoop::run() {
       }
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
-      countGazePoint();
+      countFoveatedStep();
       now = Clock::now();
       governor_busy_ += now - step_start;
       // The frame that shows a new gaze sample's refinement goes out now, not at the next tick.
@@ -148,6 +148,7 @@ void SimLoop::run() {
       spdlog::info("{}", statusLine());
       next_status_ = now + seconds(options_.status_interval_s);
       gaze_steps_ = gaze_on_water_steps_ = gaze_finest_steps_ = 0;
+      worst_over_budget_ = 0.0;
     }
     if (running && settings_.free_run) continue;
     Clock::time_point deadline = pacer_.nextDue();
@@ -290,13 +291,16 @@ void SimLoop::govern(Clock::time_point now, bool running) {
   governor_busy_ = Clock::duration::zero();
 }
 
-void SimLoop::countGazePoint() {
+void SimLoop::countFoveatedStep() {
   const sph::AdaptiveController* controller = session_.controller();
   if (session_.method() != sph::Method::Foveated || controller == nullptr) return;
-  const int level = controller->lastStats().fovea_level;
+  const sph::AdaptiveStats& stats = controller->lastStats();
   ++gaze_steps_;
-  gaze_on_water_steps_ += level >= 0;
-  gaze_finest_steps_ += level == 0;
+  gaze_on_water_steps_ += stats.fovea_level >= 0;
+  gaze_finest_steps_ += stats.fovea_level == 0;
+  if (stats.visible > 0) {
+    worst_over_budget_ = std::max(worst_over_budget_, static_cast<double>(stats.over_budget) / stats.visible);
+  }
 }
 
 void SimLoop::updateRates(Clock::time_point now) {
@@ -337,13 +341,15 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
   if (session_.method() == sph::Method::Foveated) {
     line += fmt::format(", q {:.2f}, periphery gain {:.1f}", session_.quality(), session_.peripheryGain());
     // Over the steps since the last logged status line: how often the gaze fell on visible water,
-    // and how often the water there was at the finest level.
+    // how often the water there was at the finest level, and the largest share of the visible
+    // particles over the perceptual budget (q at periphery gain 1) in a step.
     if (gaze_steps_ > 0) {
       line += fmt::format(", gaze on water in {:.0f} % of steps", 100.0 * gaze_on_water_steps_ / gaze_steps_);
       if (gaze_on_water_steps_ > 0) {
         line += fmt::format(", at {} there in {:.0f} %", sph::sizeClassName(sph::sizeLevel(0)),
                             100.0 * gaze_finest_steps_ / gaze_on_water_steps_);
       }
+      line += fmt::format(", over the perceptual budget at most {:.2f} % of the visible", 100.0 * worst_over_budget_);
     }
   }
   if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";

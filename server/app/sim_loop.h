@@ -97,8 +97,9 @@ class SimLoop {
   Clock::time_point nextStepTime() const;
   void publish(Clock::time_point now);
   void fillCounters(gsph::v1::ServerStatus& status) const;
-  // After a step: where the foveated method's gaze point fell (the window's counts).
-  void countGazePoint();
+  // After a step: where the foveated method's gaze point fell, and how much of the visible water
+  // was over the perceptual budget (the window's counts).
+  void countFoveatedStep();
   void updateRates(Clock::time_point now);
   void refreshStatusLine(Clock::time_point now);
   // After each governor window: the foveated method's periphery gain for the next.
@@ -135,6 +136,9 @@ class SimLoop {
   std::int64_t gaze_steps_ = 0;
   std::int64_t gaze_on_water_steps_ = 0;
   std::int64_t gaze_finest_steps_ = 0;
+  // foveated, since the last logged status line: the largest share of the visible particles over
+  // the perceptual budget in a step (AdaptiveStats::over_budget).
+  double worst_over_budget_ = 0.0;
   // The real-time governor's window: where it started (wall, sim) and the steps' wall time in it.
   RealtimeGovernor governor_;
   Clock::time_point governor_window_start_{};
