@@ -60,7 +60,6 @@ VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next
                                 bool confinement, bool last_step, bool track_surface_distance) {
   VelocityArrays v;
   v.n = p.size();
-  v.mass = p.mass.data();
   v.support = p.support.data();
   v.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
   v.position = p.position.data()->data();

@@ -15,8 +15,8 @@ namespace sph {
 struct PairKernels {
   std::array<CubicKernel, kSizeClassCount> classes{};
   // Each level's particle mass: every particle of a level has it (split and merge keep it so), so
-  // a pair pass among particles of one level takes the neighbour's mass from here instead of
-  // gathering it (pair_kernel.inc).
+  // a pair pass takes a neighbour's mass from here, by the neighbour's support where it is of
+  // another level, instead of gathering it (pair_kernel.inc).
   std::array<float, kSizeClassCount> mass{};
 
   CubicKernel& operator[](std::size_t c) { return classes[c]; }

@@ -24,7 +24,6 @@ namespace sph {
 
 struct VelocityArrays {
   std::size_t n = 0;
-  const float* mass = nullptr;
   const float* support = nullptr;
   const std::uint8_t* class_index = nullptr;
   const float* position = nullptr;  // packed x, y, z
