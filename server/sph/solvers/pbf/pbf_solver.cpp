@@ -31,12 +31,12 @@ constexpr float kPlacedDensity = 1.01f;
 // unmerged neighbours of a merge kicked a resting pool).
 
 // Mean of rho / rho0 - 1 over the particles, where positive, as the constraint sees it (less the
-// offsets, when `offsets`): what the tolerance bounds. Summed in a fixed order (ordered_sum.h), so
-// the count of iterations it decides is the same for any thread count.
-double meanCompression(const ParticleSet& p, float rest_density, bool offsets, std::vector<double>& partials) {
+// offsets: still_water_changes.h): what the tolerance bounds. Summed in a fixed order
+// (ordered_sum.h), so the count of iterations it decides is the same for any thread count.
+double meanCompression(const ParticleSet& p, float rest_density, std::vector<double>& partials) {
   if (p.size() == 0) return 0.0;
   const double sum = orderedSum(p.size(), partials, [&](std::size_t i) {
-    const double density = static_cast<double>(p.density[i]) - (offsets ? p.density_offset[i] : 0.0f);
+    const double density = static_cast<double>(p.density[i]) - p.density_offset[i];
     return std::max(density / rest_density - 1.0, 0.0);
   });
   return sum / static_cast<double>(p.size());
@@ -155,8 +155,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
     if (placed) still_changes_.holdChanges(p, frame.grid, start_speed_, a, constants_);
     timer.stop();
   }
-  const bool offsets = StillWaterChanges::active(p);
-  if (offsets) a.density_offset = p.density_offset.data();
+  a.density_offset = p.density_offset.data();
   // Each lambda pass keeps the pairs' kernel gradient factor for the correction that follows it
   // at the same positions (a float a pair; keeping the three components of grad W cost more than
   // evaluating them again: docs/performance.md).
@@ -187,7 +186,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
     forms.lambda(a, constants_, frame.grid);
     more = iterations + 1 < least ||
            (iterations + 1 < most && params.pbf_density_tolerance > 0.0 &&
-            meanCompression(p, constants_.rest_density, offsets, sum_partials_) > params.pbf_density_tolerance);
+            meanCompression(p, constants_.rest_density, sum_partials_) > params.pbf_density_tolerance);
     a.position_next = next_position_.data()->data();
     forms.correct(a, constants_, frame.grid, iterations == 0 && constants_.tensile_k > 0.0f);
     p.position.swap(next_position_);

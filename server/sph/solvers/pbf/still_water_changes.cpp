@@ -5,11 +5,6 @@
 
 namespace sph {
 
-bool StillWaterChanges::active(const ParticleSet& p) {
-  return std::any_of(p.still_damping.begin(), p.still_damping.end(), [](std::uint8_t d) { return d != 0; }) ||
-         std::any_of(p.density_offset.begin(), p.density_offset.end(), [](float o) { return o != 0.0f; });
-}
-
 bool StillWaterChanges::markDamped(ParticleSet& p, const NeighborGrid& grid) {
   bool any = false;
   constexpr auto kMark = static_cast<std::uint8_t>(kDampedFrames);

@@ -44,10 +44,6 @@ class StillWaterChanges {
   static constexpr float kTakingUp = 1.0f;
   static constexpr float kStillDamping = 0.7f;
 
-  // Whether any particle holds an offset or a damping mark: the pbf passes read the offsets
-  // only then. Read from the particles, so a checkpoint restores it.
-  static bool active(const ParticleSet& p);
-
   // In the frame's first step, after the prediction, the neighbour grid and the near-placement
   // marks, before the local placement: every placed particle (fresh, or not yet in place) or one
   // whose offset is still being taken up, and its neighbours, are marked for damping. Keeps the
