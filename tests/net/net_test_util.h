@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 #include <zmq.hpp>
 
@@ -44,6 +45,17 @@ inline std::unique_ptr<app::Server> startServer(const app::ServerOptions& option
   auto server = std::make_unique<app::Server>(options);
   server->start();
   return server;
+}
+
+// The server's status line once `done` holds for it, or as it stands at the deadline.
+inline std::string statusLineOnce(const app::Server& server, const std::function<bool(const std::string&)>& done) {
+  const auto end = std::chrono::steady_clock::now() + kTimeout;
+  std::string line = server.statusLine();
+  while (!done(line) && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    line = server.statusLine();
+  }
+  return line;
 }
 
 inline std::int64_t nowUs() {

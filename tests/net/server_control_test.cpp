@@ -2,10 +2,8 @@
 // one reply echoing its id, errors carry a code, and a refused request changes nothing.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <limits>
 #include <map>
-#include <thread>
 
 #include "net_test_util.h"
 
@@ -298,13 +296,10 @@ TEST(ServerControl, FoveatedRunsOnPbfAndSaysItsQuality) {
     return f.method() == gsph::v1::METHOD_FOVEATED && f.level_radii_size() == 4 && f.quality() >= 1.0f &&
            f.periphery_gain() >= 1.0f;
   })) << "frames of the foveated method with its levels, quality and periphery gain";
-  const auto end = std::chrono::steady_clock::now() + net_test::kTimeout;
-  while (run.server->statusLine().find("over the perceptual budget") == std::string::npos &&
-         std::chrono::steady_clock::now() < end) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  EXPECT_NE(run.server->statusLine().find("over the perceptual budget at most"), std::string::npos)
-      << "the status line says how much of the visible water the eye could tell apart: " << run.server->statusLine();
+  const std::string line = net_test::statusLineOnce(
+      *run.server, [](const std::string& l) { return l.find("over the perceptual budget") != std::string::npos; });
+  EXPECT_NE(line.find("over the perceptual budget at most"), std::string::npos)
+      << "the status line says how much of the visible water the eye could tell apart: " << line;
 
   Control thesis;
   thesis.mutable_set_preset()->set_preset("thesis");

@@ -162,11 +162,8 @@ TEST(ServerCurve, InsecureServersSaySoInEveryStatus) {
   ASSERT_TRUE(status);
   EXPECT_TRUE(status->status().insecure());
   EXPECT_EQ(status->status().client_role(), "operator") << "without CURVE every peer is an operator";
-  const auto end = std::chrono::steady_clock::now() + net_test::kTimeout;
-  while (server->statusLine() == "starting" && std::chrono::steady_clock::now() < end) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  EXPECT_NE(server->statusLine().find("INSECURE"), std::string::npos) << server->statusLine();
+  const std::string line = net_test::statusLineOnce(*server, [](const std::string& l) { return l != "starting"; });
+  EXPECT_NE(line.find("INSECURE"), std::string::npos) << line;
 }
 
 }  // namespace
