@@ -103,7 +103,7 @@ BENCHMARK(BM_PairStage<forcesOnly<sph::computeAccelerations>>)->Name("BM_Forces/
 
 void BM_FullStep(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(0)));
-  sph::Simulation sim(scene::loadScene("dambreak"), sph::SizeClass::Small);
+  sph::Simulation sim(scene::loadScene("dambreak"), sph::Level{0});
   for (auto _ : state) sim.step();
   state.counters["particles"] = static_cast<double>(sim.particles().size());
 }

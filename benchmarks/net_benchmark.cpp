@@ -5,7 +5,7 @@
 //     1,000-particle pool); a client sends a gaze sample and times until the first frame whose
 //     adaptive step used it (p50, p99; target p99 <= 12 ms), and counts the frames it
 //     received per second meanwhile (the early frames for new gaze must not raise it much).
-//   StepRate/<subscribers>: free-run regular dambreak (20,000 SMALL) with 0 or 8 subscribers reading
+//   StepRate/<subscribers>: free-run regular dambreak (20,000 L0) with 0 or 8 subscribers reading
 //     every frame at 60 frames/s (target: 8 cost <= 5 %).
 // Run: build/bin/sph_net_benchmark [--benchmark_repetitions=3]
 #include <benchmark/benchmark.h>
@@ -30,7 +30,7 @@ namespace {
 
 constexpr int kThreads = 2;
 
-// Arg 0: the dambreak scene (10,000 LARGE); arg 1: the 1,000-particle test pool, where the step is
+// Arg 0: the dambreak scene (10,000 L1); arg 1: the 1,000-particle test pool, where the step is
 // cheap and the figure shows the network path's own share.
 app::ServerOptions benchOptions(sph::Method method, int scene = 0) {
   app::ServerOptions o;
@@ -119,7 +119,7 @@ class Readers {
 
 void EncodePublish(benchmark::State& state) {
   omp_set_num_threads(kThreads);
-  sph::Simulation sim(scene::loadScene("dambreak"), sph::SizeClass::Small);
+  sph::Simulation sim(scene::loadScene("dambreak"), sph::Level{0});
   for (int i = 0; i < 5; ++i) sim.step();
   net::FrameEncoder encoder(state.range(0) == 0 ? net::PositionEncoding::Float32 : net::PositionEncoding::Quantized16);
   zmq::context_t ctx;

@@ -139,16 +139,11 @@ bool decodeLevels(const gsph::v1::Frame& frame, bool declared, DecodedFrame& out
       // Worded as before level_radii for two-class frames, so old and new viewers report alike.
       error = declared ? "size level " + std::to_string(c) + " is beyond the " +
                              std::to_string(out.level_counts.size()) + " levels of level_radii"
-                       : "size class " + std::to_string(c) + " is neither SMALL (0) nor LARGE (1)";
+                       : "size class " + std::to_string(c) + " is neither L0 (0) nor L1 (1)";
       return false;
     }
     ++out.level_counts[c];
   }
-  const auto countOf = [&](std::uint8_t level) {
-    return level < out.level_counts.size() ? out.level_counts[level] : 0u;
-  };
-  out.small_count = countOf(kClassSmall);
-  out.large_count = countOf(kClassLarge);
   return true;
 }
 

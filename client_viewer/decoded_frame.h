@@ -64,8 +64,6 @@ struct DecodedFrame {
   std::string scene;
   gsph::v1::Method method = gsph::v1::METHOD_UNSPECIFIED;
   bool paused = false;
-  std::uint32_t large_count = 0;  // level 1
-  std::uint32_t small_count = 0;  // level 0
   gsph::v1::PhaseTimings timings;
   float steps_per_second = 0.0f;
   GazeOverlay gaze;
@@ -91,14 +89,14 @@ struct DecodedFrame {
   std::size_t wire_bytes = 0;
 
   std::size_t particleCount() const { return positions.size(); }
-  // Any particle of a level beyond SMALL and LARGE (the foveated method's coarser levels).
+  // Any particle of a level beyond L0 and L1 (the foveated method's coarser levels).
   bool hasExtraLevels() const;
 };
 
 // Fills `out` from `frame`. On failure returns false, sets `error` to a human-readable reason and
 // leaves `out` in an unspecified state (callers decode into a fresh object and keep their last good
 // frame). Checks: protocol version, encoding, byte lengths against particle_count, level bytes
-// against the levels declared (level_radii, at most kMaxSizeLevels; else SMALL and LARGE only),
+// against the levels declared (level_radii, at most kMaxSizeLevels; else L0 and L1 only),
 // finite positions, radii and quantization box, optional per-particle fields one entry per particle.
 bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& error);
 

@@ -8,7 +8,7 @@
 // so slopes are followed.
 //
 // The kernel's radius is given in world units and converted to pixels at each pixel's depth, so a
-// surface is smoothed by the same amount near and far, and LARGE and SMALL particles (one radius
+// surface is smoothed by the same amount near and far, and L1 and L0 particles (one radius
 // for both, from the larger class) merge into one surface without a seam. The samples are bilinear
 // and at most kMaxStride texels apart, so each averages what lies between it and the next and the
 // spheres' bumps do not alias into the result; past kMaxTaps a side they spread out instead, which

@@ -10,8 +10,8 @@ layout(location = 0) in vec2 a_corner;
 layout(location = 1) in vec3 a_centre;
 layout(location = 2) in vec3 a_attrs;
 uniform float u_radius[16];
-int sizeLevel() { return clamp(int(a_attrs.x + 0.5), 0, 15); }
-float levelRadius() { return u_radius[sizeLevel()]; }
+int asLevel() { return clamp(int(a_attrs.x + 0.5), 0, 15); }
+float levelRadius() { return u_radius[asLevel()]; }
 )";
 static_assert(kMaxSizeLevels == 16, "kGlslParticleAttributes sizes u_radius by kMaxSizeLevels");
 

@@ -17,7 +17,7 @@ inline constexpr float kUnknownNeighbours = 255.0f;
 
 // What a vertex shader declares to read the particles: a_corner (the quad corner, -1..1),
 // a_centre (world), a_attrs (size level, speed, neighbours), u_radius (metres per level, set with
-// ParticleBuffers::setRadii), sizeLevel() and levelRadius() of the particle. No #version line: put
+// ParticleBuffers::setRadii), asLevel() and levelRadius() of the particle. No #version line: put
 // kGlslCommon (glsl_common.h) before it.
 extern const char* const kGlslParticleAttributes;
 

@@ -23,7 +23,7 @@ vec3 speedColour(float t) {  // blue -> cyan -> yellow -> red
   return mix(vec3(1.0, 0.9, 0.1), vec3(0.95, 0.15, 0.1), (t - 0.66) / 0.34);
 }
 
-// SMALL blue, LARGE red; the foveated method's coarser levels green and amber, any further one grey.
+// L0 blue, L1 red; the foveated method's coarser levels green and amber, any further one grey.
 vec3 levelColour(int level) {
   if (level == 0) return vec3(0.15, 0.38, 1.0);
   if (level == 1) return vec3(0.92, 0.18, 0.12);
@@ -41,7 +41,7 @@ void main() {
   if (u_colour_mode == 1) {
     v_colour = speedColour(a_attrs.y / u_max_speed);
   } else {
-    v_colour = levelColour(sizeLevel());
+    v_colour = levelColour(asLevel());
   }
   // The quad sits at the sphere's front (z + r), scaled so its outline on screen is unchanged: the
   // depth buffer then orders spheres by their nearest points, without writing gl_FragDepth (which

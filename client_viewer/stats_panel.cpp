@@ -16,27 +16,15 @@ constexpr int kMethodCount = static_cast<int>(std::size(kMethods));
 constexpr float kMinGazeRadius = 0.005f;
 constexpr float kMaxGazeRadius = 0.5f;
 
-// "particles N: LARGE a, SMALL b", and every level's count when the foveated method's coarser
-// levels are present.
+// "particles N: L0 a, L1 b, ...", every level of the frame, finest first.
 void showParticleCounts(const DecodedFrame& frame) {
-  if (!frame.hasExtraLevels()) {
-    ImGui::Text("particles %zu: LARGE %u, SMALL %u", frame.particleCount(), frame.large_count, frame.small_count);
-    return;
-  }
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
   std::string line = "particles ";
   line += std::to_string(frame.particleCount());
   line += ':';
   for (std::size_t level = 0; level < frame.level_counts.size(); ++level) {
-    line += level == 0 ? " " : ", ";
-    if (level == kClassSmall) {
-      line += "SMALL";
-    } else if (level == kClassLarge) {
-      line += "LARGE";
-    } else {
-      line += 'L';
-      line += std::to_string(level);
-    }
+    line += level == 0 ? " L" : ", L";
+    line += std::to_string(level);
     line += ' ';
     line += std::to_string(frame.level_counts[level]);
   }

@@ -66,7 +66,7 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
       ->check(cli::range(1, 4));
   std::map<std::string, ColourMode> colours{{"class", ColourMode::kSizeClass}, {"speed", ColourMode::kSpeed}};
   app.add_option("--colour,--color", o.colour,
-                 "Particles mode colour: class (SMALL blue, LARGE red) or speed (needs velocities in frames)")
+                 "Particles mode colour: class (L0 blue, L1 red) or speed (needs velocities in frames)")
       ->transform(CLI::CheckedTransformer(colours, CLI::ignore_case).description("class|speed"));
   std::array<float, 3> eye{}, target{};
   auto* eye_opt = app.add_option("--eye", eye, "Camera eye x y z (default: the scene's camera)");

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Screenshots of the five scenes with the gaze method: docs/screenshots/<scene>_fluid.png in fluid
 # mode (the default render), and docs/screenshots/dambreak_particles.png, the dam break in particles
-# mode (SMALL blue, LARGE red) from the same server, with the server's default preset (pbf). Starts
+# mode (L0 blue, L1 red) from the same server, with the server's default preset (pbf). Starts
 # sph_server per scene on free loopback ports (with --neighbor-counts, so spray shows as
 # droplets), and has sph_viewer (headless, a hidden window under Xvfb) send a fixed gaze point and
 # take the picture at the first frame it draws at or after a chosen sim time (the server runs in

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Plots sph_bench output (the thesis's figures 5.1-5.11): steps_per_second.png and particles.png,
 # one line per method, each method in the same colour in both plots and for both of its lines
-# (total solid, SMALL dashed), and perceptual_budget.png: the share of visible particles over the
+# (total solid, L0 dashed), and perceptual_budget.png: the share of visible particles over the
 # foveated method's perceptual budget, per frame. Takes a matrix (OUT_DIR/<scene>/<method>/frames.csv) or a single run
 # (OUT_DIR/frames.csv with summary.json beside it; the plots go into OUT_DIR). Uses gnuplot (Debian
 # gnuplot-nox, installed by scripts/install_deps.sh).
@@ -28,12 +28,12 @@ plot() {
   shift 2
   for entry in "$@"; do
     m=${entry%%:*} csv=${entry#*:} c=$(colour_of "$m")
-    # Columns: 1 frame, 3 n_large, 4 n_small, 10 steps_per_s, 24 n_l2, 25 n_l3, 26 visible,
-    # 27 over_budget (see bench_output.cpp; files without the last four plot them as 0).
+    # Columns: 1 frame, 3 particles, 4 levels (the counts per level, L0 first), 10 steps_per_s,
+    # 24 visible, 25 over_budget (see bench_output.cpp).
     fps_plot+="${fps_plot:+, }'$csv' using 1:10 with lines lw 1.5 lc rgb '$c' title '$m'"
-    count_plot+="${count_plot:+, }'$csv' using 1:(\$3+\$4+(valid(24)?\$24:0)+(valid(25)?\$25:0)) with lines lw 2 lc rgb '$c' title '$m total'"
-    [ "$m" = foveated ] && budget_plot+="${budget_plot:+, }'$csv' using 1:(\$26>0?100.0*\$27/\$26:0) with lines lw 1.5 lc rgb '$c' title '$m'"
-    count_plot+=", '$csv' using 1:4 with lines lw 1 dt 2 lc rgb '$c' title '$m SMALL'"
+    count_plot+="${count_plot:+, }'$csv' using 1:3 with lines lw 2 lc rgb '$c' title '$m total'"
+    [ "$m" = foveated ] && budget_plot+="${budget_plot:+, }'$csv' using 1:(\$24>0?100.0*\$25/\$24:0) with lines lw 1.5 lc rgb '$c' title '$m'"
+    count_plot+=", '$csv' using 1:(real(word(strcol(4), 1))) with lines lw 1 dt 2 lc rgb '$c' title '$m L0'"
   done
   gnuplot <<GNUPLOT
 set datafile separator ','

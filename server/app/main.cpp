@@ -30,6 +30,7 @@ struct CliOptions {
   std::map<std::string, double> gaze;  // --gaze-* options given
   std::vector<std::string> adaptive;   // --adaptive name=value
   std::vector<std::string> params;     // --param key=value
+  int levels = 0;                      // --levels N: --param levels=N
   std::string gaze_socket = "sub";
   std::string pose_socket = "sub";
   std::string log_level = "info";
@@ -123,6 +124,9 @@ void addOptions(CLI::App& cli, CliOptions& o) {
                  "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
                  "surface_includes_walls, gaze_*, foveated_*); repeatable");
   cli.option_defaults()->group("Scene and physics");
+  cli.add_option("--levels", o.levels,
+                 "size levels (the parameter 'levels': L0 the finest to L(N - 1)); the same as --param levels=N")
+      ->check(cli::range(sph::kMinLevels, sph::kMaxLevels));
   cli.add_option("--param", o.params,
                  "KEY=VALUE, a simulation parameter over the preset's and the scene file's (listed below); "
                  "repeatable");
@@ -172,6 +176,7 @@ int main(int argc, char** argv) {
       return cli::usageError(cli, "--adaptive " + setting + ": " + error);
     }
   }
+  if (o.levels != 0) o.params.insert(o.params.begin(), "levels=" + std::to_string(o.levels));
   for (const std::string& setting : o.params) {
     std::string error;
     if (!sph::parseParameterSetting(setting, o.server.sim.sim_parameters, error)) {

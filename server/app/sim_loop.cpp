@@ -315,13 +315,12 @@ void SimLoop::updateRates(Clock::time_point now) {
 void SimLoop::refreshStatusLine(Clock::time_point now) {
   // Rebuilt here, on the thread that owns the session, so other threads can read it any time.
   const sph::ParticleSet& p = session_.sim().particles();
-  const std::size_t large = p.countOf(sph::SizeClass::Large);
-  const std::size_t small = p.countOf(sph::SizeClass::Small);
-  // The foveated method's coarser levels, when there are any.
-  std::string coarser;
-  for (int k = sph::kThesisClassCount; k < sph::kSizeClassCount; ++k) {
-    const std::size_t count = p.countOf(sph::sizeLevel(k));
-    if (count > 0) coarser += fmt::format(", {} {}", count, sph::sizeClassName(sph::sizeLevel(k)));
+  // The run's levels, finest first.
+  const auto counts = p.countByLevel();
+  std::string by_level;
+  for (int k = 0; k < session_.scene().params.levels; ++k) {
+    by_level += fmt::format("{}{} {}", k == 0 ? "" : ", ", sph::levelName(sph::asLevel(k)),
+                            counts[static_cast<std::size_t>(k)]);
   }
   net::GazeArrival gaze;
   std::string gaze_text = "no gaze";
@@ -330,11 +329,11 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
         fmt::format("gaze age {:.0f} ms", std::chrono::duration<double, std::milli>(now - gaze.arrived).count());
   }
   std::string line = fmt::format(
-      "{} {} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({} large, {} small{}), {} subscribers, "
+      "{} {} {} step {} t={:.2f} s{}: {:.1f} steps/s, {} particles ({}), {} subscribers, "
       "{}, {} frames sent, {} dropped, {} inputs rejected",
       session_.scene().name, session_.preset(), sph::methodName(session_.method()), session_.sim().stepCount(),
-      session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), large,
-      small, coarser, net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
+      session_.sim().time(), settings_.paused ? " (paused)" : "", counters_.steps_per_second.load(), p.size(), by_level,
+      net_.counters().subscriptions.load(), gaze_text, counters_.frames_published.load(),
       counters_.frames_dropped.load(), rejections_.total());
   const float ratio = realtime_ratio_.load();
   if (ratio > 0.0f) line += fmt::format(", {:.2f} of real time", ratio);
@@ -346,7 +345,7 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
     if (gaze_steps_ > 0) {
       line += fmt::format(", gaze on water in {:.0f} % of steps", 100.0 * gaze_on_water_steps_ / gaze_steps_);
       if (gaze_on_water_steps_ > 0) {
-        line += fmt::format(", at {} there in {:.0f} %", sph::sizeClassName(sph::sizeLevel(0)),
+        line += fmt::format(", at {} there in {:.0f} %", sph::levelName(sph::asLevel(0)),
                             100.0 * gaze_finest_steps_ / gaze_on_water_steps_);
       }
       line += fmt::format(", over the perceptual budget at most {:.2f} % of the visible", 100.0 * worst_over_budget_);

@@ -21,7 +21,7 @@ class FedAdaptiveStep : public sph::AdaptiveStep {
     if (before_) before_(*controller_);
     controller_->apply(sim);
   }
-  sph::SizeClass coarsest() const override { return controller_->coarsest(); }
+  sph::Level coarsest() const override { return controller_->coarsest(); }
 
  private:
   std::unique_ptr<sph::AdaptiveController> controller_;
@@ -109,7 +109,7 @@ bool SimSession::setMethod(sph::Method method) {
   // Between methods of the same levels the controller switches in place; a method of other
   // levels needs another neighbour grid (and foveated's water starts coarsest): a restart.
   if (controller_ != nullptr && method != sph::Method::Regular &&
-      sph::coarsestClass(method) == sph::coarsestClass(method_)) {
+      sph::coarsestLevel(method, scene_.params.levels) == sph::coarsestLevel(method_, scene_.params.levels)) {
     controller_->setMethod(method);
     method_ = method;
     return false;
@@ -152,15 +152,14 @@ void SimSession::setCamera(const sph::ScreenCamera& camera, bool from_client) {
 }
 
 void SimSession::start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config) {
-  // Room for every LARGE particle to split (the thesis's 20,000 for 10,000 LARGE).
-  const std::size_t capacity =
-      std::max<std::size_t>(sph::ParticleSet::kDefaultCapacity,
-                            static_cast<std::size_t>(sph::initialParticleCount(scene, sph::SizeClass::Small)));
+  // Room for every particle to split to L0 (the thesis's 20,000 for 10,000 L1).
+  const std::size_t capacity = std::max<std::size_t>(
+      sph::ParticleSet::kDefaultCapacity, static_cast<std::size_t>(sph::initialParticleCount(scene, sph::Level{0})));
   // Build everything first, then swap: a throw leaves the running simulation untouched.
-  auto sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method), capacity);
+  auto sim = std::make_unique<sph::Simulation>(scene, sph::startLevel(method, scene.params.levels), capacity);
   const sph::ScreenCamera camera = camera_from_client_ ? camera_ : sph::cameraFromSpec(scene.camera);
   sph::AdaptiveController* controller = nullptr;
-  if (auto owned = sph::makeAdaptiveController(method, config, camera)) {
+  if (auto owned = sph::makeAdaptiveController(method, scene.params.levels, config, camera)) {
     controller = owned.get();
     sim->setAdaptiveStep(std::make_unique<FedAdaptiveStep>(std::move(owned), before_));
   }

@@ -84,14 +84,24 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
        }},
       {"Steps per second", [](const RunSummary& r) { return fixed(r.summary.steps_per_s, 1); }},
       {"Wall s per simulated s", [](const RunSummary& r) { return fixed(r.summary.wall_per_simulated, 2); }},
-      {"Mean LARGE / SMALL",
-       [](const RunSummary& r) { return fixed(r.summary.mean_large, 0) + " / " + fixed(r.summary.mean_small, 0); }},
-      {"Mean L2 / L3 (foveated)",
-       [](const RunSummary& r) { return fixed(r.summary.mean_l2, 0) + " / " + fixed(r.summary.mean_l3, 0); }},
+      {"Mean LARGE / SMALL",  // the thesis's names for L1 and L0
+       [](const RunSummary& r) {
+         return fixed(r.summary.mean_levels[1], 0) + " / " + fixed(r.summary.mean_levels[0], 0);
+       }},
+      {"Mean L2 / L3 / ... (foveated)",
+       [](const RunSummary& r) {
+         std::string text;
+         for (int k = 2; k < r.summary.levels; ++k) {
+           if (k > 2) text += " / ";
+           text += fixed(r.summary.mean_levels[static_cast<std::size_t>(k)], 0);
+         }
+         return text.empty() ? std::string("-") : text;
+       }},
       {"Mean particles",
        [](const RunSummary& r) {
-         const Summary& s = r.summary;
-         return fixed(s.mean_small + s.mean_large + s.mean_l2 + s.mean_l3, 0);
+         double n = 0.0;
+         for (const double c : r.summary.mean_levels) n += c;
+         return fixed(n, 0);
        }},
       {"Perceptual budget exceeded (max share of visible)",
        [](const RunSummary& r) { return fixed(100.0 * r.summary.max_over_budget_share, 2) + " %"; }},

@@ -74,6 +74,9 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
                  "same machine load (0 = each method start to end, one after another)")
       ->check(cli::nonNegative())
       ->capture_default_str();
+  app.add_option("--levels", request.levels,
+                 "size levels for every scene (parameter 'levels': L0 the finest to L(N - 1)); default: the scene's")
+      ->check(cli::range(sph::kMinLevels, sph::kMaxLevels));
   app.add_option("--export-every", request.export_every, "write a particle snapshot every K frames (0 = never)")
       ->check(cli::nonNegative());
   app.add_option("--export-format", export_format,
@@ -115,7 +118,7 @@ class ProgressLines {
     it->second = now;
     std::fprintf(stderr, "[%s/%s/%s] frame %d/%d  t=%.2fs  mean step %.3f ms  particles %zu\n", run.scene->name.c_str(),
                  run.scene->params.preset.c_str(), run.method.c_str(), record.frame, frames, record.sim_time, mean_ms,
-                 record.n_large + record.n_small + record.n_l2 + record.n_l3);
+                 record.particles());
   }
 
  private:

@@ -49,10 +49,8 @@ Summary summarize(const RunResult& run) {
   s.wall_per_simulated = run.frame_seconds > 0.0 ? s.total.mean / 1000.0 / run.frame_seconds : 0.0;
   const double n = std::max<std::size_t>(run.records.size(), 1);
   for (const FrameRecord& r : run.records) {
-    s.mean_large += static_cast<double>(r.n_large) / n;
-    s.mean_small += static_cast<double>(r.n_small) / n;
-    s.mean_l2 += static_cast<double>(r.n_l2) / n;
-    s.mean_l3 += static_cast<double>(r.n_l3) / n;
+    s.levels = r.levels;
+    for (std::size_t k = 0; k < r.by_level.size(); ++k) s.mean_levels[k] += static_cast<double>(r.by_level[k]) / n;
     if (r.visible > 0) {
       s.max_over_budget_share = std::max(s.max_over_budget_share, static_cast<double>(r.over_budget) / r.visible);
     }
@@ -86,10 +84,7 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
                  {"total", phaseJson(s.total)}};
   j["steps_per_s"] = s.steps_per_s;
   j["wall_seconds_per_simulated_second"] = s.wall_per_simulated;
-  j["mean_large"] = s.mean_large;
-  j["mean_small"] = s.mean_small;
-  j["mean_l2"] = s.mean_l2;
-  j["mean_l3"] = s.mean_l3;
+  j["mean_levels"] = std::vector<double>(s.mean_levels.begin(), s.mean_levels.begin() + s.levels);
   j["max_over_budget_share"] = s.max_over_budget_share;
   j["mean_neighbors_per_particle"] = s.mean_neighbors;
   j["neighbor_list_stride"] = run.neighbor_stride;
@@ -113,24 +108,34 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   openOut(path) << j.dump(2) << "\n";
 }
 
+// "a b c": the frame's particles per level, L0 first.
+static std::string levelCounts(const FrameRecord& r) {
+  std::string text;
+  for (int k = 0; k < r.levels; ++k) {
+    if (k > 0) text += ' ';
+    text += std::to_string(r.by_level[static_cast<std::size_t>(k)]);
+  }
+  return text;
+}
+
 void writeFramesCsv(const RunResult& run, const std::string& path) {
   std::ofstream out = openOut(path);
-  out << "frame,sim_time,n_large,n_small,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
+  // `levels`: the particles per level, L0 first, as many as the run has levels, space-separated.
+  out << "frame,sim_time,particles,levels,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
          "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
-         "divergence_iterations,placement_iterations,n_l2,n_l3,visible,over_budget\n";
+         "divergence_iterations,placement_iterations,visible,over_budget\n";
   char line[640];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
     std::snprintf(
         line, sizeof line,
-        "%d,%.4f,%zu,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%zu,%zu,%d,"
-        "%d\n",
-        r.frame, r.sim_time, r.n_large, r.n_small, r.ms.neighbor_ms, r.ms.density_pressure_ms,
+        "%d,%.4f,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%d,%d\n",
+        r.frame, r.sim_time, r.particles(), levelCounts(r).c_str(), r.ms.neighbor_ms, r.ms.density_pressure_ms,
         r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s, r.mean_neighbors,
         r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges, sph::gazeModeName(r.gaze_mode), r.merge_unpaired,
-        r.rms_speed, r.volume, r.substeps, r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.n_l2,
-        r.n_l3, r.visible, r.over_budget);
+        r.rms_speed, r.volume, r.substeps, r.solver_iterations, r.divergence_iterations, r.placement_iterations,
+        r.visible, r.over_budget);
     out << line;
   }
 }
@@ -163,14 +168,19 @@ std::string framesText(const RunResult& run) {
   return std::to_string(run.framesRun()) + " of " + std::to_string(run.frames) + " frames (INTERRUPTED)";
 }
 
-// The foveated method's coarser levels and its perceptual budget, for the run line; empty for
-// the thesis's methods.
-static std::string coarserLevels(const Summary& s) {
-  if (s.mean_l2 + s.mean_l3 <= 0.0) return {};
-  char buf[160];
-  std::snprintf(buf, sizeof buf, " L2 %.0f L3 %.0f (over budget at most %.2f %%)", s.mean_l2, s.mean_l3,
-                100.0 * s.max_over_budget_share);
-  return buf;
+// The mean particles per level, "L0 a, L1 b, ...", and the foveated method's perceptual budget.
+static std::string levelText(const Summary& s) {
+  std::string text;
+  char buf[64];
+  for (int k = 0; k < s.levels; ++k) {
+    std::snprintf(buf, sizeof buf, "%sL%d %.0f", k == 0 ? "" : ", ", k, s.mean_levels[static_cast<std::size_t>(k)]);
+    text += buf;
+  }
+  if (s.max_over_budget_share > 0.0 || s.levels > 2) {
+    std::snprintf(buf, sizeof buf, " (over budget at most %.2f %%)", 100.0 * s.max_over_budget_share);
+    text += buf;
+  }
+  return text;
 }
 
 std::string summaryText(const RunResult& run, const Summary& s) {
@@ -179,13 +189,13 @@ std::string summaryText(const RunResult& run, const Summary& s) {
                 "%s/%s (%s): %s, %d threads | mean ms: neighbours %.3f, density+pressure %.3f, "
                 "accel+integrate+collide %.3f, adaptive %.3f, total %.3f (p95 %.3f) | %.1f steps/s, "
                 "%.2f wall s per simulated s | "
-                "LARGE %.0f SMALL %.0f%s | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
+                "%s | neighbours %.1f | rho/rho0 mean %.3f max %.3f | mass %.6f -> %.6f | "
                 "NaN %zu, outside %zu | at the end: %s | other load: %s",
                 run.scene.c_str(), run.method.c_str(), run.preset.c_str(), framesText(run).c_str(), run.threads,
                 s.neighbor.mean, s.density_pressure.mean, s.accel_integrate_collide.mean, s.adaptive.mean, s.total.mean,
-                s.total.p95, s.steps_per_s, s.wall_per_simulated, s.mean_large, s.mean_small, coarserLevels(s).c_str(),
-                s.mean_neighbors, s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values,
-                s.outside_box, describeVolume(run).c_str(), describe(run.machine_load).c_str());
+                s.total.p95, s.steps_per_s, s.wall_per_simulated, levelText(s).c_str(), s.mean_neighbors,
+                s.mean_density_ratio, s.max_density_ratio, run.mass_start, run.mass_end, s.nan_values, s.outside_box,
+                describeVolume(run).c_str(), describe(run.machine_load).c_str());
   return buf;
 }
 
@@ -199,7 +209,7 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
       const auto& u = p.velocity[i];
       out << p.id[i] << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << u.x() << ',' << u.y() << ',' << u.z()
           << ',' << p.density[i] << ',' << p.pressure[i] << ',' << p.mass[i] << ',' << p.radius[i] << ','
-          << static_cast<int>(p.size_class[i]) << '\n';
+          << static_cast<int>(p.level[i]) << '\n';
     }
     return;
   }
@@ -224,8 +234,8 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
   scalars("pressure", p.pressure);
   scalars("mass", p.mass);
   scalars("radius", p.radius);
-  out << "SCALARS size_class int 1\nLOOKUP_TABLE default\n";  // 0 SMALL, 1 LARGE
-  for (std::size_t i = 0; i < n; ++i) out << static_cast<int>(p.size_class[i]) << '\n';
+  out << "SCALARS size_class int 1\nLOOKUP_TABLE default\n";  // 0 L0, 1 L1
+  for (std::size_t i = 0; i < n; ++i) out << static_cast<int>(p.level[i]) << '\n';
   out << "SCALARS id unsigned_int 1\nLOOKUP_TABLE default\n";
   for (std::size_t i = 0; i < n; ++i) out << p.id[i] << '\n';
 }

@@ -1,6 +1,7 @@
 // Writes a run's summary.json and frames.csv, and particle snapshots (CSV or legacy VTK).
 #pragma once
 
+#include <array>
 #include <string>
 
 #include "bench/bench_run.h"
@@ -19,7 +20,9 @@ struct Summary {
   // The steps' wall-clock seconds per simulated second (the simulation's own cost; the bench's
   // measurements between steps left out): under 1 is faster than real time.
   double wall_per_simulated = 0.0;
-  double mean_large = 0.0, mean_small = 0.0, mean_l2 = 0.0, mean_l3 = 0.0, mean_neighbors = 0.0;
+  int levels = sph::kMinLevels;                       // the run's level count
+  std::array<double, sph::kMaxLevels> mean_levels{};  // mean particles per level, L0 first
+  double mean_neighbors = 0.0;
   // foveated: the largest share of visible particles over the perceptual budget in any frame.
   double max_over_budget_share = 0.0;
   double mean_density_ratio = 0.0, max_density_ratio = 0.0;

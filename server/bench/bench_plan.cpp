@@ -91,7 +91,13 @@ BenchPlan planBench(const BenchRequest& request) {
   const std::vector<std::string> presets = request.presets.empty() ? std::vector<std::string>{""} : request.presets;
   plan.scenes.reserve(scene_names.size() * presets.size());  // the runs point into it
   for (const auto& s : scene_names) {
-    for (const auto& preset : presets) plan.scenes.push_back(scene::loadScene(s, request.scene_dir, preset));
+    for (const auto& preset : presets) {
+      sph::Scene& loaded = plan.scenes.emplace_back(scene::loadScene(s, request.scene_dir, preset));
+      if (request.levels != 0) {
+        loaded.params.levels = request.levels;
+        loaded.params.validate();
+      }
+    }
   }
 
   const gaze::GazeRecording* override_gaze = nullptr;

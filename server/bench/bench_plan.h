@@ -33,6 +33,7 @@ struct BenchRequest {
   int threads = 2;
   int interleave = 10;  // frames per turn; 0: each method start to end, one after another
   int export_every = 0;
+  int levels = 0;  // the level count for every scene (SimParams::levels); 0: each scene's own
   SnapshotFormat export_format = SnapshotFormat::Vtk;
   // thesis, pbf, dfsph: each scene runs once per preset named, the presets taking turns like the
   // methods; none: each scene's own

@@ -30,11 +30,18 @@ bool methodNeedsGaze(const std::string& method) {
   return sph::methodByName(method, m) && sph::usesGaze(m);
 }
 
+std::size_t FrameRecord::particles() const {
+  std::size_t n = 0;
+  for (const std::size_t c : by_level) n += c;
+  return n;
+}
+
 void measureState(const sph::Simulation& sim, FrameRecord& r) {
   const sph::ParticleSet& p = sim.particles();
   const sph::BoxState box = sim.boxNow();
   const double rho0 = sim.params().rest_density;
-  std::size_t by_level[sph::kSizeClassCount] = {};
+  r.levels = sim.params().levels;
+  r.by_level = {};
   r.nan_values = 0;
   r.outside_box = 0;
   double density_sum = 0.0;
@@ -44,7 +51,7 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
   // A particle counts as outside when its centre has left the box (a float hair of slack).
   const float slack = 1e-4f;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    by_level[sph::classIndex(p.size_class[i])] += 1;
+    r.by_level[static_cast<std::size_t>(sph::levelIndex(p.level[i]))] += 1;
     const sph::Vec3& x = p.position[i];
     const sph::Vec3& u = p.velocity[i];
     for (int a = 0; a < 3; ++a) {
@@ -59,11 +66,6 @@ void measureState(const sph::Simulation& sim, FrameRecord& r) {
     speed_sq_sum += u.squaredNorm();
     volume += p.density[i] > 0.0f ? p.mass[i] / p.density[i] : 0.0;
   }
-  static_assert(sph::kSizeClassCount == 4, "a column per level");
-  r.n_small = by_level[0];
-  r.n_large = by_level[1];
-  r.n_l2 = by_level[2];
-  r.n_l3 = by_level[3];
   const double n = std::max<std::size_t>(p.size(), 1);
   r.mean_density_ratio = density_sum / n / rho0;
   r.max_density_ratio = density_max / rho0;
@@ -89,12 +91,12 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
     throw std::invalid_argument("method '" + method + "' needs a gaze recording (scene '" + scene.name +
                                 "' names none; pass --gaze FILE)");
   }
-  // Room for every LARGE particle to split, as sph_server allows (app/sim_session.cpp).
-  const std::size_t capacity =
-      std::max<std::size_t>(sph::ParticleSet::kDefaultCapacity,
-                            static_cast<std::size_t>(sph::initialParticleCount(scene, sph::SizeClass::Small)));
-  sim_ = std::make_unique<sph::Simulation>(scene, sph::startClass(m), capacity);
-  auto adaptive = sph::makeAdaptiveController(m, scene.adaptive, sph::cameraFromSpec(scene.camera));
+  // Room for every particle to split to L0, as sph_server allows (app/sim_session.cpp).
+  const std::size_t capacity = std::max<std::size_t>(
+      sph::ParticleSet::kDefaultCapacity, static_cast<std::size_t>(sph::initialParticleCount(scene, sph::Level{0})));
+  sim_ = std::make_unique<sph::Simulation>(scene, sph::startLevel(m, scene.params.levels), capacity);
+  auto adaptive =
+      sph::makeAdaptiveController(m, scene.params.levels, scene.adaptive, sph::cameraFromSpec(scene.camera));
   controller_ = adaptive.get();
   sim_->setAdaptiveStep(std::move(adaptive));
   if (!options.load_state.empty()) sph::loadCheckpoint(*sim_, method, options.load_state);

@@ -2,6 +2,7 @@
 // counts, and the health checks (mass, NaN, particles outside the box, density, neighbours).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -19,10 +20,9 @@ namespace bench {
 struct FrameRecord {
   int frame = 0;
   double sim_time = 0.0;
-  std::size_t n_large = 0;  // level 1
-  std::size_t n_small = 0;  // level 0
-  std::size_t n_l2 = 0;     // the foveated method's coarser levels
-  std::size_t n_l3 = 0;
+  int levels = sph::kMinLevels;                         // the run's level count (SimParams::levels)
+  std::array<std::size_t, sph::kMaxLevels> by_level{};  // particles per level, L0 first
+  std::size_t particles() const;
   sph::PhaseTimings ms;
   double mean_neighbors = 0.0;
   double mean_density_ratio = 0.0;  // mean rho / rho0
@@ -37,7 +37,7 @@ struct FrameRecord {
   std::size_t outside_box = 0;
   int splits = 0;  // adaptive step of this frame
   int merges = 0;
-  int merge_unpaired = 0;  // SMALL particles flagged MERGE that found no partner
+  int merge_unpaired = 0;  // particles flagged MERGE that found no partner
   sph::GazeMode gaze_mode = sph::GazeMode::None;
   // foveated: the perceptual budget (adaptive/foveated.h): visible particles, and those wider than
   // the eye allows at their eccentricity.
@@ -81,7 +81,7 @@ struct RunOptions {
   std::function<void(const sph::Simulation&, const FrameRecord&)> on_frame;
 };
 
-// Methods this build knows (sph::methodNames); `regular` is all SMALL with no adaptive step.
+// Methods this build knows (sph::methodNames); `regular` is all L0 with no adaptive step.
 const std::vector<std::string>& knownMethods();
 // Throws std::invalid_argument naming the known methods when `method` is not one of them.
 void requireKnownMethod(const std::string& method);

@@ -1,6 +1,6 @@
 // sph_gaze_record: writes the synthetic gaze recording a scene ships with (scenes/<name>.gaze.csv),
 // so that headless runs of the gaze and hybrid methods are reproducible. Fixation targets are points
-// on the water at the time of the fixation: the tool first runs the scene (LARGE particles, no
+// on the water at the time of the fixation: the tool first runs the scene (L1 particles, no
 // adaptive step) and keeps the projected positions of a sample of particles every 0.1 s; a target
 // is one of them, as a viewer's eye jumps between places on the water. The seed comes from the
 // scene name and the simulation is deterministic, so a recording is remade bit for bit.
@@ -66,7 +66,7 @@ void waterOnScreen(const sph::Scene& scene, gaze::FixationModelParams& params) {
 class WaterOnScreen {
  public:
   WaterOnScreen(const sph::Scene& scene, double interval_s, std::size_t per_snapshot) : interval_s_(interval_s) {
-    sph::Simulation sim(scene, sph::SizeClass::Large);
+    sph::Simulation sim(scene, sph::Level{1});
     const sph::Projector projector(sph::cameraFromSpec(scene.camera));
     const int steps_per_snapshot = std::max(1, static_cast<int>(std::lround(interval_s / scene.params.time_step)));
     for (int step = 0; step <= scene.frames; ++step) {

@@ -87,7 +87,7 @@ void writeVtu(const sph::ParticleSet& p, double time, const std::string& path) {
   const std::uint64_t o_mass = data.add(p.mass);
   const std::uint64_t o_radius = data.add(p.radius);
   std::vector<std::uint8_t> size_class(n);
-  for (std::size_t i = 0; i < n; ++i) size_class[i] = static_cast<std::uint8_t>(p.size_class[i]);
+  for (std::size_t i = 0; i < n; ++i) size_class[i] = static_cast<std::uint8_t>(p.level[i]);
   const std::uint64_t o_class = data.add(size_class);
   const std::uint64_t o_id = data.add(p.id);
 

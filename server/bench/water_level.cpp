@@ -43,7 +43,7 @@ sph::Boundary boxAlone(const sph::Boundary& boundary) {
 
 Walls wallsOf(const sph::Scene& scene, const sph::BoxState& box) {
   sph::IncompressibleSetup setup = sph::makeIncompressibleSetup(scene);
-  sph::BoundaryVolume floor(boxAlone(scene.boundary), setup.kernels.classes, setup.spacing);
+  sph::BoundaryVolume floor(boxAlone(scene.boundary), setup.kernels.classes, setup.spacing, scene.params.levels);
   constexpr float kFar = 1e6f;  // metres: beyond any kernel's reach
   Walls walls{std::move(setup), std::move(floor), box, box};
   walls.floor_only.min.x() = walls.floor_only.min.z() = -kFar;
@@ -67,7 +67,7 @@ struct Gauge {
 // above); each class's Phi weighted by its share of the water's sum there. Over a half-space at
 // rest any symmetric kernel gives rho0 / 2 at the surface.
 double densityAt(const Gauge& g, double y) {
-  double by_class[sph::kSizeClassCount] = {};
+  double by_class[sph::kMaxLevels] = {};
   for (const Candidate& c : *g.near) {
     const sph::CubicKernel& kernel = g.walls->kernel(c.class_index);
     const double dy = y - c.y;
@@ -81,13 +81,13 @@ double densityAt(const Gauge& g, double y) {
   const sph::Vec3 at(static_cast<float>(g.x), static_cast<float>(y), static_cast<float>(g.z));
   double floor_phi = 0.0;
   double sides_phi = 0.0;
-  for (int c = 0; c < sph::kSizeClassCount; ++c) {
+  for (int c = 0; c < sph::kMaxLevels; ++c) {
     if (by_class[c] <= 0.0) continue;
     const double share = by_class[c] / water;
     floor_phi += share * g.walls->floor.sample(at, c, g.walls->floor_only).phi;
     sides_phi += share * g.walls->sides().sample(at, c, g.walls->sides_only).phi;
   }
-  // A gauge stands at least half a SMALL spacing off every side wall and obstacle, where a side's
+  // A gauge stands at least half an L0 spacing off every side wall and obstacle, where a side's
   // Phi stays under a half (measureWaterLevel); the bound only keeps the quotient finite.
   return (water + g.rest_density * floor_phi) / std::max(1.0 - sides_phi, 0.25);
 }
@@ -181,8 +181,8 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene,
   out.incompressible_depth = incompressibleDepth(mass / rest_density, scene.boundary, box);
   if (p.empty() || reach <= 0.0) return out;
   const Walls walls = wallsOf(scene, box);
-  // Half a SMALL spacing: where a wall layer's particle stands, its line clear of any solid.
-  const double half_spacing = 0.5 * walls.setup.spacing[sph::classIndex(sph::SizeClass::Small)];
+  // Half an L0 spacing: where a wall layer's particle stands, its line clear of any solid.
+  const double half_spacing = 0.5 * walls.setup.spacing[sph::levelIndex(sph::Level{0})];
 
   // The particles binned into columns of the largest support, so a gauge reads 3 x 3 columns.
   const double x0 = box.min.x();
@@ -221,7 +221,7 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene,
             const double hz = p.position[i].z() - gauge.z;
             const double h_sq = hx * hx + hz * hz;
             if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::classIndex(p.size_class[i])});
+              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::levelIndex(p.level[i])});
             }
           }
         }

@@ -11,7 +11,7 @@
 // water's, and the part of the kernel a side wall or an obstacle takes is divided out, so a gauge
 // beside a wall, or over a sheet thinner than a support, reads like one in open deep water. The
 // gauges stand one in each cell of a grid over the whole floor, less the cells whose centre is
-// within half a SMALL spacing of an obstacle. Where the surface is a single height over the floor
+// within half an L0 spacing of an obstacle. Where the surface is a single height over the floor
 // (no overhang, no spray), the mean level over the gauges is the water's depth, moving or not; it
 // is the settled depth once the water is at rest.
 #pragma once

@@ -13,10 +13,9 @@ namespace {
 // The wire format is little-endian; on such hosts the particle arrays are copied as they are.
 static_assert(std::endian::native == std::endian::little, "frame encoding assumes a little-endian host");
 static_assert(sizeof(sph::Vec3) == 3 * sizeof(float), "positions must be packed x, y, z floats");
-static_assert(sizeof(sph::SizeClass) == 1 && static_cast<int>(sph::SizeClass::Small) == 0 &&
-                  static_cast<int>(sph::SizeClass::Large) == 1,
-              "size_classes bytes are the SizeClass values");
-static_assert(sph::kSizeClassCount <= 16, "level_radii holds at most 16 levels (client_viewer/decoded_frame.h)");
+static_assert(sizeof(sph::Level) == 1 && static_cast<int>(sph::Level{0}) == 0 && static_cast<int>(sph::Level{1}) == 1,
+              "size_classes bytes are the Level values");
+static_assert(sph::kMaxLevels <= 16, "level_radii holds at most 16 levels (client_viewer/decoded_frame.h)");
 
 constexpr double kQuantLevels = 65535.0;
 
@@ -53,13 +52,14 @@ void encodeGeometry(const sph::Simulation& sim, gsph::v1::Geometry* g) {
   }
 }
 
-// Every level's radius, present or not, so a client can size any level byte it meets.
+// The radius of every level of the run, present or not, so a client can size any level byte it meets.
 void encodeLevelRadii(const sph::SimParams& params, gsph::v1::Frame& f) {
-  const auto classes = params.classes();
-  f.set_radius_small(static_cast<float>(classes[sph::classIndex(sph::SizeClass::Small)].radius));
-  f.set_radius_large(static_cast<float>(classes[sph::classIndex(sph::SizeClass::Large)].radius));
+  const auto classes = params.levelProps();
+  f.set_radius_small(static_cast<float>(classes[sph::levelIndex(sph::Level{0})].radius));
+  f.set_radius_large(static_cast<float>(classes[sph::levelIndex(sph::Level{1})].radius));
   f.clear_level_radii();
-  for (const sph::SizeClassProps& level : classes) f.add_level_radii(static_cast<float>(level.radius));
+  for (int k = 0; k < params.levels; ++k)
+    f.add_level_radii(static_cast<float>(classes[static_cast<std::size_t>(k)].radius));
 }
 
 }  // namespace
@@ -130,8 +130,16 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   f.set_periphery_gain(info.periphery_gain);
   f.set_realtime_ratio(info.realtime_ratio);
   f.set_particle_count(static_cast<std::uint32_t>(p.size()));
-  f.set_large_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Large)));
-  f.set_small_count(static_cast<std::uint32_t>(p.countOf(sph::SizeClass::Small)));
+  const auto by_level = p.countByLevel();
+  f.clear_level_counts();
+  for (int k = 0; k < sim.params().levels; ++k)
+    f.add_level_counts(static_cast<std::uint32_t>(by_level[static_cast<std::size_t>(k)]));
+    // The deprecated pair, for clients of the previous version (sph.proto).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  f.set_large_count(static_cast<std::uint32_t>(by_level[1]));
+  f.set_small_count(static_cast<std::uint32_t>(by_level[0]));
+#pragma GCC diagnostic pop
 
   const sph::PhaseTimings& t = sim.lastTimings();
   gsph::v1::PhaseTimings* pt = f.mutable_timings();
@@ -164,7 +172,7 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   encodePositions(sim);
   std::string* sizes = f.mutable_size_classes();
   sizes->resize(p.size());
-  if (!p.empty()) std::memcpy(sizes->data(), p.size_class.data(), p.size());
+  if (!p.empty()) std::memcpy(sizes->data(), p.level.data(), p.size());
   if (velocities_) {
     std::string* v = f.mutable_velocities();
     v->resize(p.size() * sizeof(sph::Vec3));

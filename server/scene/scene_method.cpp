@@ -6,8 +6,8 @@
 namespace scene {
 
 bool solverHasLevelsOf(const sph::Scene& scene, sph::Method method) {
-  const int levels_needed = sph::classIndex(sph::coarsestClass(method)) + 1;
-  return levels_needed <= sph::kThesisClassCount || levels_needed <= sph::makeFluidSolver(scene)->sizeLevels();
+  const int levels_needed = sph::levelIndex(sph::coarsestLevel(method, scene.params.levels)) + 1;
+  return levels_needed <= sph::kThesisLevels || levels_needed <= sph::makeFluidSolver(scene)->sizeLevels();
 }
 
 sph::Method ownMethod(const sph::Scene& scene) {

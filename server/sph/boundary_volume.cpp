@@ -65,9 +65,11 @@ void BoundaryVolume::Table::at(float x, float& v, float& dv) const {
   dv = (1.0f - f) * slope[i] + f * slope[i + 1];
 }
 
-BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicKernel, kSizeClassCount>& kernels,
-                               const std::array<float, kSizeClassCount>& spacing)
+BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicKernel, kMaxLevels>& kernels,
+                               const std::array<float, kMaxLevels>& spacing, int levels)
     : kernels_(kernels), spacing_(spacing) {
+  // Tables for the run's levels only: no particle is of a coarser one.
+  const auto level_count = static_cast<std::size_t>(std::clamp(levels, 1, kMaxLevels));
   // f and f' sampled over [start, start + span], f' by central differences of f.
   const auto tabulate = [](double start, double span, auto&& f) {
     Table t;
@@ -86,7 +88,7 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     t.slope.back() = 0.0f;
     return t;
   };
-  for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+  for (std::size_t c = 0; c < level_count; ++c) {
     const CubicKernel& k = kernels[c];
     const double s = spacing[c];
     plane_[c] = tabulate(0.0, k.h, [&](double u) { return planeSum(k, s, u); });
@@ -96,8 +98,8 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
   // Sphere: a shell of radius q about the centre at distance D adds s q / D (A(|D - q|) - A(D + q))
   // (the kernel over the sphere, with r^2 = D^2 + q^2 - 2 D q cos theta).
   for (const Sphere& sp : boundary.spheres) {
-    std::array<Table, kSizeClassCount> tables;
-    for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+    std::array<Table, kMaxLevels> tables;
+    for (std::size_t c = 0; c < level_count; ++c) {
       const CubicKernel& k = kernels[c];
       const double s = spacing[c];
       const auto plane = [&](double u) {
@@ -135,8 +137,8 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     return sum;
   };
   for (const Cylinder& cy : boundary.cylinders) {
-    std::array<Table, kSizeClassCount> tables;
-    for (std::size_t c = 0; c < kSizeClassCount; ++c) {
+    std::array<Table, kMaxLevels> tables;
+    for (std::size_t c = 0; c < level_count; ++c) {
       const double h = kernels[c].h, s = spacing[c];
       tables[c] = tabulate(cy.radius, h, [&](double d) { return shellSum(line_[c], cy.radius, s, h, d); });
     }

@@ -36,8 +36,8 @@ struct BoundarySample {
 class BoundaryVolume {
  public:
   // `spacing[c]`: the rest lattice spacing of class c, cbrt(m / rho0), of the virtual particles.
-  BoundaryVolume(const Boundary& boundary, const std::array<CubicKernel, kSizeClassCount>& kernels,
-                 const std::array<float, kSizeClassCount>& spacing);
+  BoundaryVolume(const Boundary& boundary, const std::array<CubicKernel, kMaxLevels>& kernels,
+                 const std::array<float, kMaxLevels>& spacing, int levels);
 
   // Phi, grad Phi at x for a particle of class c, with the box as it stands at this instant.
   BoundarySample sample(const Vec3& x, int class_index, const BoxState& box) const;
@@ -53,10 +53,10 @@ class BoundaryVolume {
   // on each axis (in metres) and which face (min: sign +1, max: -1).
   void boxShare(const float distance[3], const float sign[3], int c, BoundarySample& out) const;
 
-  std::array<CubicKernel, kSizeClassCount> kernels_;
-  std::array<float, kSizeClassCount> spacing_{};
-  std::array<Table, kSizeClassCount> plane_, line_;                      // A(u): a layer's integral; L(rho): a row's
-  std::vector<std::array<Table, kSizeClassCount>> spheres_, cylinders_;  // Phi(D) per obstacle
+  std::array<CubicKernel, kMaxLevels> kernels_;
+  std::array<float, kMaxLevels> spacing_{};
+  std::array<Table, kMaxLevels> plane_, line_;                      // A(u): a layer's integral; L(rho): a row's
+  std::vector<std::array<Table, kMaxLevels>> spheres_, cylinders_;  // Phi(D) per obstacle
   std::vector<float> sphere_radius_, cylinder_radius_;
   std::vector<Eigen::Vector3f> sphere_centres_;
   std::vector<Eigen::Vector2f> cylinder_axes_;  // x, z

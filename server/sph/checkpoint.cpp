@@ -198,19 +198,20 @@ CheckpointInfo loadCheckpoint(Simulation& sim, const std::string& method, const 
     if (!allFinite(values)) in.fail(std::string("attribute '") + spec.name + "' holds a non-finite value");
   });
   if (!in.atEnd()) in.fail("unexpected bytes after the last attribute");
-  const auto classes = sim.params().classes();
+  const auto classes = sim.params().levelProps();
   for (std::size_t i = 0; i < restored.size(); ++i) {
-    if (classIndex(restored.size_class[i]) >= kSizeClassCount) {
-      in.fail("particle " + std::to_string(i) + " has an unknown size class");
+    if (levelIndex(restored.level[i]) >= sim.params().levels) {
+      in.fail("particle " + std::to_string(i) + " has level " + std::to_string(levelIndex(restored.level[i])) +
+              ", past this run's " + std::to_string(sim.params().levels) + " levels");
     }
     if (restored.id[i] >= next_id) in.fail("particle id " + std::to_string(restored.id[i]) + " beyond the id counter");
     // The solvers take a particle's mass and support from its class (pair_kernels.h): a file from a
     // scene of other particle counts (the same name, another mass) would not match them.
-    const SizeClassProps& props = classes[classIndex(restored.size_class[i])];
+    const LevelProps& props = classes[levelIndex(restored.level[i])];
     if (restored.mass[i] != static_cast<float>(props.mass) ||
         restored.support[i] != static_cast<float>(props.support)) {
       in.fail("particle " + std::to_string(i) +
-              " has another mass or support than its class has here (saved from "
+              " has another mass or support than its level has here (saved from "
               "a scene with other particle counts?)");
     }
   }

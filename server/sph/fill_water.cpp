@@ -3,12 +3,23 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sph {
 
-void fillWater(const Scene& scene, SizeClass start_class, const FluidSolver& solver, ParticleSet& out) {
-  const SizeClassProps props = scene.params.classes()[classIndex(start_class)];
+void fillWater(const Scene& scene, Level start_class, const FluidSolver& solver, ParticleSet& out) {
+  const auto levels = scene.params.levelProps();
+  const LevelProps props = levels[levelIndex(start_class)];
+  const std::array<int, kMaxLevels> fill = initialFill(scene, start_class);
   const int count = initialParticleCount(scene, start_class);
+  // Every particle may refine to L0: the finest count must fit as well as the start's.
+  const int finest = initialParticleCount(scene, Level{0});
+  if (static_cast<std::size_t>(finest) > out.capacity()) {
+    throw std::invalid_argument(scene.source + ": key 'large_particles' (" + std::to_string(scene.large_particles) +
+                                ") makes " + std::to_string(finest) +
+                                " L0 particles when refined, more than the capacity of " +
+                                std::to_string(out.capacity()));
+  }
   const double spacing = std::cbrt(props.mass / scene.params.rest_density);
   const double inset = solver.fillInset(spacing, props.radius);
   int cells[3];
@@ -19,14 +30,17 @@ void fillWater(const Scene& scene, SizeClass start_class, const FluidSolver& sol
   const long capacity = static_cast<long>(cells[0]) * cells[1] * cells[2];
   if (capacity < count) {
     throw std::invalid_argument(scene.source + ": water region holds " + std::to_string(capacity) + " " +
-                                sizeClassName(start_class) + " particles at spacing " + std::to_string(spacing) +
+                                levelName(start_class) + " particles at spacing " + std::to_string(spacing) +
                                 ", the scene needs " + std::to_string(count));
   }
-  if (static_cast<std::size_t>(count) > out.capacity()) {
-    throw std::invalid_argument(scene.source + ": " + std::to_string(count) + " particles exceed the capacity of " +
-                                std::to_string(out.capacity()));
-  }
   out.clear();
+  // The fill's rest, one particle each of some finer levels, takes the last sites filled.
+  std::vector<Level> rest;
+  for (int j = 0; j < levelIndex(start_class); ++j) {
+    if (fill[static_cast<std::size_t>(j)] != 0) rest.push_back(asLevel(j));
+  }
+  const long first_rest = count - static_cast<long>(rest.size());
+  long site = 0;
   // The lowest layers full, and the particles left over for the top layer spread evenly over its
   // cells (every cell whose share of them, in row order, reaches a new whole): filled row by row
   // they would cover one side of the footprint, a step in the surface a spacing high that sets the
@@ -43,7 +57,9 @@ void fillWater(const Scene& scene, SizeClass start_class, const FluidSolver& sol
       const Eigen::Vector3d p = scene.water.min + Eigen::Vector3d(inset + static_cast<double>(x) * spacing,
                                                                   inset + static_cast<double>(y) * spacing,
                                                                   inset + static_cast<double>(z) * spacing);
-      out.add(p.cast<float>(), Vec3::Zero(), start_class, props);
+      const Level level = site < first_rest ? start_class : rest[static_cast<std::size_t>(site - first_rest)];
+      ++site;
+      out.add(p.cast<float>(), Vec3::Zero(), level, level == start_class ? props : levels[levelIndex(level)]);
     }
   }
   const BoxState box = scene.boundary.stateAt(0.0);

@@ -10,6 +10,6 @@ namespace sph {
 // Fills `out` with the scene's water on a cubic lattice of spacing cbrt(m / rho0), bottom layer
 // first, the first point `solver`'s fill inset in from the region's faces.
 // Throws std::invalid_argument when the region cannot hold the particles or lies outside the box.
-void fillWater(const Scene& scene, SizeClass start_class, const FluidSolver& solver, ParticleSet& out);
+void fillWater(const Scene& scene, Level start_class, const FluidSolver& solver, ParticleSet& out);
 
 }  // namespace sph

@@ -131,7 +131,7 @@ void NeighborGrid::build(const ParticleSet& particles) {
     }
     std::uint32_t max_count = 0;
     // Blocks of particles taken by whichever thread is free: the cost per particle varies with its
-    // class and neighbour count, and adaptive runs keep the SMALL ones (the costly ones) together
+    // class and neighbour count, and adaptive runs keep the L0 ones (the costly ones) together
     // at the end of the arrays, so fixed halves left one thread waiting for the other.
     const BlockLists job{particle_cell_.data(),
                          cell_start_.data(),

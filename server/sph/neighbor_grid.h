@@ -1,7 +1,7 @@
 // Neighbour search on a uniform grid: a counting sort bins particles into cells (deterministic,
 // the same order for any thread count), then a parallel pass writes each particle's neighbours
 // into one flat array, the lists packed back to back within blocks of 256 particles. Neighbours
-// follow the adaptive criterion |ri - rj| <= (hi + hj) / 2, eq. (3.34), so mixed SMALL and LARGE
+// follow the adaptive criterion |ri - rj| <= (hi + hj) / 2, eq. (3.34), so mixed L0 and L1
 // particles need no second code path.
 #pragma once
 

@@ -52,15 +52,18 @@ const std::vector<ParamSpec>& parameterTable() {
        "the frame: simulated seconds a step advances (pbf and dfsph take solver steps inside it)"},
       {"gravity", nullptr, "all", &SimParams::gravity, -kInf, kInf, true, true, "gravity along y, m/s^2"},
       // The particles (table 3.2; eqs. 3.7, 3.8).
-      {"mass_small", nullptr, "all", &SimParams::mass_small, 0, kInf, true, true, "mass of a SMALL particle, kg"},
+      {"mass_small", nullptr, "all", &SimParams::mass_small, 0, kInf, true, true, "mass of an L0 particle, kg"},
       {"mass_large", nullptr, "all", &SimParams::mass_large, 0, kInf, true, true,
-       "mass of a LARGE particle, kg: twice mass_small (a split halves a particle, eq. 3.38)"},
+       "mass of an L1 particle, kg: twice mass_small (a split halves a particle, eq. 3.38)"},
       {"kernel_particles_small", nullptr, "all", &SimParams::kernel_particles_small, 0, kInf, true, true,
-       "particles x in a SMALL particle's support, which sets its radius (eq. 3.8)"},
+       "particles x in an L0 particle's support, which sets its radius (eq. 3.8)"},
       {"kernel_particles_large", nullptr, "all", &SimParams::kernel_particles_large, 0, kInf, true, true,
-       "particles x in a LARGE particle's support; also the surface threshold l (eq. 3.36)"},
+       "particles x in an L1 particle's support; also the surface threshold l (eq. 3.36)"},
       {"resort_interval", nullptr, "all", &SimParams::resort_interval, 1, kMostSteps, false, false,
        "steps between reorderings of the particle arrays into grid-cell order"},
+      {"levels", nullptr, "all", &SimParams::levels, kMinLevels, kMaxLevels, false, false,
+       "size levels the adaptive methods may use, L0 (the finest) to L(levels - 1), each twice the mass of the one "
+       "below"},
       // The thesis's forces (3.3-3.5).
       {"gas_stiffness", nullptr, "thesis", &SimParams::gas_stiffness, 0, kInf, true, true,
        "k of the state equation p = k (rho - rho0), eq. (3.12)"},
@@ -218,7 +221,7 @@ void SimParams::validate() const {
   // particle of a class keep its class's mass, which mass by class and the pair passes rely on.
   if (mass_large != 2.0 * mass_small) throw std::invalid_argument("parameter 'mass_large' must be twice 'mass_small'");
   // The pair passes tell a neighbour's class, so its kernel and mass, by its support.
-  const auto props = classes();
+  const auto props = levelProps();
   bool supports_differ = true;
   for (std::size_t a = 0; a < props.size(); ++a) {
     for (std::size_t b = a + 1; b < props.size(); ++b) {
@@ -227,8 +230,8 @@ void SimParams::validate() const {
   }
   if (!supports_differ) {
     throw std::invalid_argument(
-        "parameters 'kernel_particles_small' and 'kernel_particles_large' give both classes "
-        "one support: the classes (and the coarser levels) must differ in it");
+        "parameters 'kernel_particles_small' and 'kernel_particles_large' give two levels "
+        "one support: the levels must differ in it");
   }
 }
 

@@ -6,16 +6,16 @@
 
 namespace sph {
 
-const char* sizeClassName(SizeClass c) {
-  static const char* const kNames[kSizeClassCount] = {"SMALL", "LARGE", "L2", "L3"};
-  const int k = classIndex(c);
-  return k >= 0 && k < kSizeClassCount ? kNames[k] : "unknown";
+const char* levelName(Level c) {
+  static const char* const kNames[kMaxLevels] = {"L0", "L1", "L2", "L3", "L4", "L5", "L6", "L7"};
+  const int k = levelIndex(c);
+  return k >= 0 && k < kMaxLevels ? kNames[k] : "L?";
 }
 
 namespace {
 
-SizeClassProps deriveClass(double mass, double kernel_particles, double rho0) {
-  SizeClassProps p;
+LevelProps deriveClass(double mass, double kernel_particles, double rho0) {
+  LevelProps p;
   p.mass = mass;
   p.kernel_particles = kernel_particles;
   p.radius = std::cbrt(3.0 * mass / (4.0 * std::numbers::pi * rho0));  // (3.7)
@@ -26,14 +26,14 @@ SizeClassProps deriveClass(double mass, double kernel_particles, double rho0) {
 
 }  // namespace
 
-std::array<SizeClassProps, kSizeClassCount> SimParams::classes() const {
-  std::array<SizeClassProps, kSizeClassCount> levels;
-  levels[0] = deriveClass(mass_small, kernel_particles_small, rest_density);
-  for (int k = 1; k < kSizeClassCount; ++k) {
-    levels[static_cast<std::size_t>(k)] =
+std::array<LevelProps, kMaxLevels> SimParams::levelProps() const {
+  std::array<LevelProps, kMaxLevels> props;
+  props[0] = deriveClass(mass_small, kernel_particles_small, rest_density);
+  for (int k = 1; k < kMaxLevels; ++k) {
+    props[static_cast<std::size_t>(k)] =
         deriveClass(std::ldexp(mass_large, k - 1), kernel_particles_large, rest_density);
   }
-  return levels;
+  return props;
 }
 
 double SimParams::surfaceThreshold() const { return std::sqrt(rest_density / kernel_particles_large); }

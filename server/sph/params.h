@@ -12,23 +12,24 @@
 
 namespace sph {
 
-// A particle's size level. The thesis's two classes are the first two: SMALL (level 0, mass m) and
-// LARGE (level 1, 2 m). The foveated method (adaptive/foveated.h) uses coarser levels as well:
-// level k has mass 2^k m, so a split halves a particle into two of the level below and a merge
-// joins two of one level into one of the level above, exactly as (3.37)-(3.43) do for the two
-// classes, and mass stays exact through any number of changes.
-enum class SizeClass : std::uint8_t { Small = 0, Large = 1 };
-inline constexpr int kSizeClassCount = 4;
+// A particle's size level: L0 is the finest, and level k has mass 2^k m, so a split halves a
+// particle into two of the level below and a merge joins two of one level into one of the level
+// above, as (3.37)-(3.43) do for the thesis's two classes, and mass stays exact through any number
+// of changes. The thesis's L0 and L1 are L0 and L1 of a two-level run. A run uses
+// SimParams::levels of them (2 to kMaxLevels).
+enum class Level : std::uint8_t {};
+inline constexpr int kMaxLevels = 8;
+inline constexpr int kMinLevels = 2;
 // The thesis's methods use the first two levels only.
-inline constexpr int kThesisClassCount = 2;
+inline constexpr int kThesisLevels = 2;
 
-inline int classIndex(SizeClass c) { return static_cast<int>(c); }
-inline SizeClass sizeLevel(int level) { return static_cast<SizeClass>(level); }
-// "SMALL", "LARGE", then "L2", "L3".
-const char* sizeClassName(SizeClass c);
+inline int levelIndex(Level c) { return static_cast<int>(c); }
+inline Level asLevel(int level) { return static_cast<Level>(level); }
+// "L0", "L1", ... "L7"; "L?" for a value past kMaxLevels.
+const char* levelName(Level c);
 
-// Per size class: what table 3.2 gives (mass, kernel particles x) and what follows from it.
-struct SizeClassProps {
+// Per level: what table 3.2 gives (mass, kernel particles x) and what follows from it.
+struct LevelProps {
   double mass = 0.0;              // m (table 3.2)
   double kernel_particles = 0.0;  // x (table 3.2)
   double radius = 0.0;            // r = cbrt(3 m / (4 pi rho0)), eq. (3.7)
@@ -55,6 +56,9 @@ struct SimParams {
   double kernel_particles_large = 20.0;
   bool surface_tension_enabled = true;
   int resort_interval = 8;
+  // How many size levels the adaptive methods may use, L0 to L(levels - 1); the thesis's methods
+  // use the first two.
+  int levels = 4;
 
   // The incompressible solvers: time_step stays the frame (a step of the simulation: what the
   // server publishes and the adaptive step follows); they take solver steps inside it.
@@ -78,9 +82,9 @@ struct SimParams {
   int dfsph_max_iterations = 100;
   bool dfsph_conjugate_gradients = false;
 
-  // Every level's properties: level 0 and 1 from table 3.2; level k >= 2 has mass 2^(k-1)
-  // mass_large and LARGE's kernel particles (the support grows with the particle).
-  std::array<SizeClassProps, kSizeClassCount> classes() const;
+  // Every level's properties up to kMaxLevels: L0 and L1 from table 3.2; Lk, k >= 2, has mass
+  // 2^(k-1) mass_large and L1's kernel particles (the support grows with the particle).
+  std::array<LevelProps, kMaxLevels> levelProps() const;
   double surfaceThreshold() const;  // l, eq. (3.36)
   // Throws std::invalid_argument naming the offending key when a value is out of its range
   // (param_table.h, which defines this) or the masses and supports do not fit together.

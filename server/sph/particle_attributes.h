@@ -16,18 +16,18 @@ namespace sph {
 
 using Vec3 = Eigen::Vector3f;
 
-// A particle splits into two of the level below, a LARGE into two SMALL children (eqs.
+// A particle splits into two of the level below, an L1 into two L0 children (eqs.
 // (3.37)-(3.39)); each child's attribute is:
 enum class SplitRule : std::uint8_t {
   kCopy,     // the parent's value (velocity, eq. (3.39); position, then moved apart along the split axis)
   kHalve,    // half the parent's value: an extensive quantity (mass, eq. (3.38); volume)
   kReset,    // the attribute's reset value
   kFreshId,  // the first child keeps the parent's value, the second its own fresh one (the id)
-  kClass,    // the level below the parent's (SMALL for LARGE; ParticleSet::setClass: size class, radius, support)
+  kLevel,    // the level below the parent's (L0 for L1; ParticleSet::setLevel: size class, radius, support)
   kMark,     // kPlacedThisFrame for both: the adaptive step placed them (the `placed` flag)
 };
 
-// Two particles of a level merge into one of the level above, two SMALL into one LARGE (eqs.
+// Two particles of a level merge into one of the level above, two L0 into one L1 (eqs.
 // (3.40)-(3.43)); the survivor's attribute is:
 enum class MergeRule : std::uint8_t {
   kKeep,     // the survivor's own value (the id)
@@ -36,7 +36,7 @@ enum class MergeRule : std::uint8_t {
   kMin,      // the smaller (a distance: the nearer of the two is the merged particle's)
   kMax,      // the larger
   kReset,    // the attribute's reset value
-  kClass,    // the level above the two's (LARGE for SMALL; ParticleSet::setClass)
+  kLevel,    // the level above the two's (L1 for L0; ParticleSet::setLevel)
   kMark,     // kPlacedThisFrame: the adaptive step placed it (the `placed` flag)
 };
 
@@ -57,7 +57,7 @@ struct AttributeSpec {
 // every vector has the same size. Declare a new one here AND in kParticleAttributes below.
 struct ParticleAttributes {
   std::vector<std::uint32_t> id;  // stable id, survives reordering
-  std::vector<SizeClass> size_class;
+  std::vector<Level> level;       // L0 the finest (params.h)
   std::vector<float> mass;
   std::vector<float> radius;   // particle radius, eq. (3.7)
   std::vector<float> support;  // support radius h, eq. (3.8)
@@ -117,11 +117,10 @@ inline constexpr float kFar = std::numeric_limits<float>::infinity();
 // sensible values.
 inline const auto kParticleAttributes = std::make_tuple(
     AttributeSpec<std::uint32_t>{&ParticleAttributes::id, "id", 0u, SplitRule::kFreshId, MergeRule::kKeep},
-    AttributeSpec<SizeClass>{&ParticleAttributes::size_class, "size_class", SizeClass::Small, SplitRule::kClass,
-                             MergeRule::kClass},
+    AttributeSpec<Level>{&ParticleAttributes::level, "level", Level{0}, SplitRule::kLevel, MergeRule::kLevel},
     AttributeSpec<float>{&ParticleAttributes::mass, "mass", 0.0f, SplitRule::kHalve, MergeRule::kSum},
-    AttributeSpec<float>{&ParticleAttributes::radius, "radius", 0.0f, SplitRule::kClass, MergeRule::kClass},
-    AttributeSpec<float>{&ParticleAttributes::support, "support", 0.0f, SplitRule::kClass, MergeRule::kClass},
+    AttributeSpec<float>{&ParticleAttributes::radius, "radius", 0.0f, SplitRule::kLevel, MergeRule::kLevel},
+    AttributeSpec<float>{&ParticleAttributes::support, "support", 0.0f, SplitRule::kLevel, MergeRule::kLevel},
     AttributeSpec<Vec3>{&ParticleAttributes::position, "position", Vec3::Zero(), SplitRule::kCopy, MergeRule::kAverage},
     AttributeSpec<Vec3>{&ParticleAttributes::velocity, "velocity", Vec3::Zero(), SplitRule::kCopy, MergeRule::kAverage},
     AttributeSpec<Vec3>{&ParticleAttributes::acceleration, "acceleration", Vec3::Zero(), SplitRule::kCopy,

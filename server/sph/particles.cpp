@@ -17,7 +17,7 @@ template <typename T>
 T mergedValue(MergeRule rule, const T& a, const T& b, const T& reset) {
   switch (rule) {
     case MergeRule::kKeep:
-    case MergeRule::kClass:  // set by setClass afterwards
+    case MergeRule::kLevel:  // set by setLevel afterwards
       return a;
     case MergeRule::kReset:
       return reset;
@@ -47,14 +47,14 @@ ParticleSet::ParticleSet(std::size_t capacity) : capacity_(capacity) {
   removal_moves_.reserve(capacity_ / 2);  // a merge removes one of two particles
 }
 
-std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, SizeClass c, const SizeClassProps& props) {
+std::uint32_t ParticleSet::add(const Vec3& p, const Vec3& v, Level c, const LevelProps& props) {
   requireRoom(size() + 1, capacity_);
   forEachAttributeSpec([](auto& values, const auto& spec) { values.push_back(spec.reset_value); });
   const std::size_t i = size() - 1;
   const std::uint32_t new_id = next_id_++;
   id[i] = new_id;
   mass[i] = static_cast<float>(props.mass);
-  setClass(i, c, props);
+  setLevel(i, c, props);
   position[i] = p;
   velocity[i] = v;
   return new_id;
@@ -68,14 +68,13 @@ std::size_t ParticleSet::appendReset(std::size_t n) {
   return first;
 }
 
-void ParticleSet::setClass(std::size_t i, SizeClass c, const SizeClassProps& props) {
-  size_class[i] = c;
+void ParticleSet::setLevel(std::size_t i, Level c, const LevelProps& props) {
+  level[i] = c;
   radius[i] = static_cast<float>(props.radius);
   support[i] = static_cast<float>(props.support);
 }
 
-void ParticleSet::splitInto(std::size_t parent, std::size_t child, SizeClass child_level,
-                            const SizeClassProps& child_props) {
+void ParticleSet::splitInto(std::size_t parent, std::size_t child, Level child_level, const LevelProps& child_props) {
   forEachAttributeSpec([&](auto& v, const auto& spec) {
     using T = typename std::remove_cvref_t<decltype(spec)>::Value;
     switch (spec.split) {
@@ -101,20 +100,20 @@ void ParticleSet::splitInto(std::size_t parent, std::size_t child, SizeClass chi
         }
         throw std::logic_error(std::string("split rule kMark does not apply to ") + spec.name);
       case SplitRule::kFreshId:  // the child keeps the id appendReset gave it
-      case SplitRule::kClass:    // setClass below
+      case SplitRule::kLevel:    // setLevel below
         break;
     }
   });
-  setClass(parent, child_level, child_props);
-  setClass(child, child_level, child_props);
+  setLevel(parent, child_level, child_props);
+  setLevel(child, child_level, child_props);
 }
 
-void ParticleSet::mergeInto(std::size_t survivor, std::size_t absorbed, SizeClass merged_level,
-                            const SizeClassProps& merged_props) {
+void ParticleSet::mergeInto(std::size_t survivor, std::size_t absorbed, Level merged_level,
+                            const LevelProps& merged_props) {
   forEachAttributeSpec([&](auto& v, const auto& spec) {
     v[survivor] = mergedValue(spec.merge, v[survivor], v[absorbed], spec.reset_value);
   });
-  setClass(survivor, merged_level, merged_props);
+  setLevel(survivor, merged_level, merged_props);
 }
 
 void ParticleSet::clear() {
@@ -174,9 +173,15 @@ double ParticleSet::totalMass() const {
   return m;
 }
 
-std::size_t ParticleSet::countOf(SizeClass c) const {
+std::array<std::size_t, kMaxLevels> ParticleSet::countByLevel() const {
+  std::array<std::size_t, kMaxLevels> n{};
+  for (const Level s : level) n[static_cast<std::size_t>(levelIndex(s)) % kMaxLevels] += 1;
+  return n;
+}
+
+std::size_t ParticleSet::countOf(Level c) const {
   std::size_t n = 0;
-  for (SizeClass s : size_class) n += (s == c);
+  for (Level s : level) n += (s == c);
   return n;
 }
 

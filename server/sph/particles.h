@@ -3,6 +3,7 @@
 // can be forgotten.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -16,7 +17,7 @@ namespace sph {
 
 class ParticleSet : public ParticleAttributes {
  public:
-  // The thesis's ceiling: 10,000 LARGE particles that may all split into 20,000 SMALL.
+  // The thesis's ceiling: 10,000 L1 particles that may all split into 20,000 L0.
   static constexpr std::size_t kDefaultCapacity = 20000;
 
   explicit ParticleSet(std::size_t capacity = kDefaultCapacity);
@@ -31,7 +32,7 @@ class ParticleSet : public ParticleAttributes {
   // Appends one particle; class-derived attributes (mass, radius, support) come from `props`, the
   // others take their reset values. Throws std::length_error past the capacity (the step never
   // grows the arrays).
-  std::uint32_t add(const Vec3& position, const Vec3& velocity, SizeClass size_class, const SizeClassProps& props);
+  std::uint32_t add(const Vec3& position, const Vec3& velocity, Level level, const LevelProps& props);
   void clear();
   // Appends `n` particles with fresh ids and every other attribute at its reset value, for the
   // caller to fill (the adaptive step's split children). Returns the index of the first. Throws
@@ -40,16 +41,15 @@ class ParticleSet : public ParticleAttributes {
 
   // Split: `parent` and `child` (appended by appendReset) become the two children, every
   // attribute by its SplitRule; then both take the level below the parent's, `child_level` with
-  // `child_props` (setClass; SMALL for the thesis's LARGE). The caller places them (positions
+  // `child_props` (setLevel; L0 for the thesis's L1). The caller places them (positions
   // start as the parent's).
-  void splitInto(std::size_t parent, std::size_t child, SizeClass child_level, const SizeClassProps& child_props);
+  void splitInto(std::size_t parent, std::size_t child, Level child_level, const LevelProps& child_props);
   // Merge: `survivor` becomes the merged particle, every attribute by its MergeRule from the
-  // two, and takes the level above theirs, `merged_level` with `merged_props` (LARGE for two of the
-  // thesis's SMALL). The caller removes `absorbed` afterwards.
-  void mergeInto(std::size_t survivor, std::size_t absorbed, SizeClass merged_level,
-                 const SizeClassProps& merged_props);
-  // The class-derived attributes (SplitRule::kClass / MergeRule::kClass): size class, radius, support.
-  void setClass(std::size_t i, SizeClass c, const SizeClassProps& props);
+  // two, and takes the level above theirs, `merged_level` with `merged_props` (L1 for two of the
+  // thesis's L0). The caller removes `absorbed` afterwards.
+  void mergeInto(std::size_t survivor, std::size_t absorbed, Level merged_level, const LevelProps& merged_props);
+  // The class-derived attributes (SplitRule::kLevel / MergeRule::kLevel): size class, radius, support.
+  void setLevel(std::size_t i, Level c, const LevelProps& props);
 
   // Reorders every attribute so that new index k holds old index order[k].
   void permute(std::span<const std::uint32_t> order);
@@ -63,7 +63,9 @@ class ParticleSet : public ParticleAttributes {
   // Sum of masses in double precision (exact for the levels' masses of the presets up to rounding
   // of the float attributes themselves; tests compare against level counts).
   double totalMass() const;
-  std::size_t countOf(SizeClass c) const;
+  std::size_t countOf(Level c) const;
+  // The particles of each level, L0 first, in one pass.
+  std::array<std::size_t, kMaxLevels> countByLevel() const;
 
   // f(vector) for every attribute, in declaration order.
   template <typename F>

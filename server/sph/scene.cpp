@@ -16,10 +16,22 @@ Scene gatedScene(const Scene& scene) {
   return gated;
 }
 
-int initialParticleCount(const Scene& scene, SizeClass start_class) {
-  if (start_class == SizeClass::Large) return scene.large_particles;
-  const double ratio = scene.params.mass_large / scene.params.classes()[classIndex(start_class)].mass;
-  return static_cast<int>(std::lround(scene.large_particles * ratio));
+std::array<int, kMaxLevels> initialFill(const Scene& scene, Level start) {
+  std::array<int, kMaxLevels> counts{};
+  const int k = levelIndex(start);
+  if (k < 0 || k >= kMaxLevels) throw std::invalid_argument("initialFill: no level " + std::to_string(k));
+  // The water's mass in L0 particles (m_L1 = 2 m_L0, SimParams::validate).
+  const long long finest = 2LL * scene.large_particles;
+  counts[static_cast<std::size_t>(k)] = static_cast<int>(finest >> k);
+  const long long rest = finest - ((finest >> k) << k);
+  for (int j = 0; j < k; ++j) counts[static_cast<std::size_t>(j)] = static_cast<int>((rest >> j) & 1);
+  return counts;
+}
+
+int initialParticleCount(const Scene& scene, Level start) {
+  int n = 0;
+  for (const int c : initialFill(scene, start)) n += c;
+  return n;
 }
 
 }  // namespace sph

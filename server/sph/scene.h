@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 
 #include "sph/adaptive/method.h"
@@ -33,7 +34,7 @@ struct Scene {
   // The water starts as a lattice filling this region from its floor up (so it is as shallow as
   // the region's footprint allows); the region need not be full.
   Aabb water;
-  int large_particles = 10000;  // adaptive methods start with this many LARGE particles
+  int large_particles = 10000;  // adaptive methods start with this many L1 particles
   int frames = 900;             // steps in a full-length run
   CameraSpec camera;
   // The method a run uses when none is named (regular, surface, gaze, hybrid), its settings, and
@@ -43,12 +44,17 @@ struct Scene {
   std::string gaze_recording;
 };
 
-// Which class the water starts in: adaptive methods start LARGE; the regular method fills the same
-// mass with SMALL particles (m_LARGE / m_SMALL as many: 20,000 with the thesis preset).
 // The scene with its container narrowed to the water region (clipped to the box) and nothing
 // moving: where fresh water settles before it is released (Simulation's constructor).
 Scene gatedScene(const Scene& scene);
 
-int initialParticleCount(const Scene& scene, SizeClass start_class);
+// The particles a scene's water starts with, per level, when it starts at `start`: the mass of
+// `large_particles` L1 particles, exactly. The regular method fills it with L0 (twice as many:
+// 20,000 with the thesis preset), the thesis's adaptive methods with L1, and foveated with its
+// coarsest level; where that level's mass does not divide the water's, the rest is one particle
+// each of some finer levels (the binary digits of the remainder), so every start has the same mass.
+std::array<int, kMaxLevels> initialFill(const Scene& scene, Level start);
+// The fill's particles over all levels.
+int initialParticleCount(const Scene& scene, Level start);
 
 }  // namespace sph

@@ -10,7 +10,7 @@
 
 namespace sph {
 
-Simulation::Simulation(const Scene& scene, SizeClass start_class, std::size_t capacity)
+Simulation::Simulation(const Scene& scene, Level start_class, std::size_t capacity)
     : scene_(scene), particles_(capacity), start_class_(start_class) {
   scene_.params.validate();
   solver_ = makeFluidSolver(scene_);
@@ -21,16 +21,20 @@ Simulation::Simulation(const Scene& scene, SizeClass start_class, std::size_t ca
 }
 
 void Simulation::configureGrid() {
-  const auto classes = scene_.params.classes();
-  double support = classes[classIndex(start_class_)].support;
+  const auto classes = scene_.params.levelProps();
+  double support = classes[levelIndex(start_class_)].support;
   if (adaptive_ != nullptr) {
-    for (int k = 0; k <= classIndex(adaptive_->coarsest()); ++k) support = std::max(support, classes[k].support);
+    for (int k = 0; k <= levelIndex(adaptive_->coarsest()); ++k) support = std::max(support, classes[k].support);
   }
   grid_.configure(scene_.boundary.enclosingBox(), static_cast<float>(support), particles_.capacity());
 }
 
 void Simulation::setAdaptiveStep(std::unique_ptr<AdaptiveStep> step) {
-  if (step != nullptr && classIndex(step->coarsest()) >= solver_->sizeLevels()) {
+  if (step != nullptr && levelIndex(step->coarsest()) >= scene_.params.levels) {
+    throw std::invalid_argument("the method needs " + std::to_string(levelIndex(step->coarsest()) + 1) +
+                                " size levels; parameter 'levels' is " + std::to_string(scene_.params.levels));
+  }
+  if (step != nullptr && levelIndex(step->coarsest()) >= solver_->sizeLevels()) {
     throw std::invalid_argument("the '" + scene_.params.solver + "' solver handles " +
                                 std::to_string(solver_->sizeLevels()) +
                                 " size levels; this method needs more (use the pbf or dfsph preset)");

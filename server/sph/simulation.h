@@ -22,15 +22,15 @@ class AdaptiveStep {
  public:
   virtual ~AdaptiveStep() = default;
   virtual void apply(Simulation& sim) = 0;
-  // The coarsest level the step makes (the thesis's methods: LARGE); the neighbour grid's cells
+  // The coarsest level the step makes (the thesis's methods: L1); the neighbour grid's cells
   // fit its support.
-  virtual SizeClass coarsest() const { return SizeClass::Large; }
+  virtual Level coarsest() const { return Level{1}; }
 };
 
 class Simulation {
  public:
   // Fills the scene's water with particles of `start_class` (see fillWater).
-  Simulation(const Scene& scene, SizeClass start_class, std::size_t capacity = ParticleSet::kDefaultCapacity);
+  Simulation(const Scene& scene, Level start_class, std::size_t capacity = ParticleSet::kDefaultCapacity);
 
   // Without an adaptive step only the start class exists, and the neighbour grid's cells fit its
   // support; with one, the largest support of the levels it makes (AdaptiveStep::coarsest).
@@ -65,7 +65,7 @@ class Simulation {
   Scene scene_;
   ParticleSet particles_;
   NeighborGrid grid_;
-  SizeClass start_class_;
+  Level start_class_;
   std::unique_ptr<FluidSolver> solver_;
   std::unique_ptr<AdaptiveStep> adaptive_;
   PhaseTimings timings_;

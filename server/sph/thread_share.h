@@ -10,7 +10,7 @@
 namespace sph {
 
 // Particles per chunk of the pair loops, which threads take as they come free: the cost of a
-// particle varies with its class and neighbour count, and adaptive runs keep the costly SMALL
+// particle varies with its class and neighbour count, and adaptive runs keep the costly L0
 // particles together at the end of the arrays. Each particle's sums are its own, so the result
 // does not depend on which thread takes which chunk.
 inline constexpr int kPairLoopChunk = 256;

@@ -65,15 +65,15 @@ TEST(AdaptiveMethods, GazeSplitsOnlyInsideTheCircleAndTheRestMergesLater) {
   rig.sim->step();
   const sph::ParticleSet& p = rig.sim->particles();
   ASSERT_GT(rig.controller->lastStats().splits, 0);
-  ASSERT_LT(p.countOf(sph::SizeClass::Small), p.size() / 2);
+  ASSERT_LT(p.countOf(sph::Level{0}), p.size() / 2);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Seen s = seenFrom(proj, p, i, corner.x, corner.y);
-    if (p.size_class[i] == sph::SizeClass::Large) {
+    if (p.level[i] == sph::Level{1}) {
       // Unsplit particles did not overlap the circle when the decision was made (f >= 0, 3.47).
-      EXPECT_GE(s.distance, config.gaze_radius + s.radius - 1e-9) << "LARGE particle " << i;
+      EXPECT_GE(s.distance, config.gaze_radius + s.radius - 1e-9) << "L1 particle " << i;
     } else {
       // Children sit within half a parent radius of a parent that overlapped the circle.
-      EXPECT_LT(s.distance, config.gaze_radius + 3.0 * s.radius) << "SMALL particle " << i;
+      EXPECT_LT(s.distance, config.gaze_radius + 3.0 * s.radius) << "L0 particle " << i;
     }
   }
   // The gaze moves to the opposite corner: the first region merges back over the next steps.
@@ -81,8 +81,7 @@ TEST(AdaptiveMethods, GazeSplitsOnlyInsideTheCircleAndTheRestMergesLater) {
   const auto smallNearFirstCorner = [&] {
     std::size_t count = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      count += p.size_class[i] == sph::SizeClass::Small &&
-               seenFrom(proj, p, i, corner.x, corner.y).distance < config.gaze_radius;
+      count += p.level[i] == sph::Level{0} && seenFrom(proj, p, i, corner.x, corner.y).distance < config.gaze_radius;
     }
     return count;
   };
@@ -108,12 +107,12 @@ TEST(AdaptiveMethods, SurfaceSplitsTheSurfaceAndKeepsTheDeepInteriorLarge) {
     const sph::Vec3& x = p.position[i];
     if (x.y() > top - 0.02f) {
       ++top_layer;
-      top_layer_small += p.size_class[i] == sph::SizeClass::Small;
+      top_layer_small += p.level[i] == sph::Level{0};
     }
     const bool far_from_walls = x.x() > 0.17f && x.x() < 0.33f && x.z() > 0.17f && x.z() < 0.33f;
     if (far_from_walls && x.y() > 0.12f && x.y() < top - 0.12f) {
       ++interior;
-      interior_large += p.size_class[i] == sph::SizeClass::Large;
+      interior_large += p.level[i] == sph::Level{1};
     }
   }
   ASSERT_GT(top_layer, 50u);
@@ -141,13 +140,13 @@ TEST(AdaptiveMethods, HybridKeepsDeepParticlesUnderTheGazeLarge) {
       const sph::Vec3& x = p.position[i];
       const bool deep =
           x.x() > 0.17f && x.x() < 0.33f && x.z() > 0.17f && x.z() < 0.33f && x.y() > 0.1f && x.y() < 0.18f;
-      count += deep && p.size_class[i] == sph::SizeClass::Small;
+      count += deep && p.level[i] == sph::Level{0};
     }
     return count;
   };
   EXPECT_GT(deepSmall(gaze.sim->particles()), 20u) << "the gaze method splits under the gaze";
-  EXPECT_EQ(deepSmall(hybrid.sim->particles()), 0u) << "hybrid keeps the deep ones LARGE";
-  EXPECT_GT(hybrid.sim->particles().countOf(sph::SizeClass::Small), 0u);
+  EXPECT_EQ(deepSmall(hybrid.sim->particles()), 0u) << "hybrid keeps the deep ones L1";
+  EXPECT_GT(hybrid.sim->particles().countOf(sph::Level{0}), 0u);
 }
 
 // Class changes per step while the gaze jitters in place, with or without the ring.
@@ -212,19 +211,22 @@ TEST(AdaptiveMethods, LostGazeIsHeldThenFallsBackToSurface) {
   EXPECT_EQ(rig.controller->lastStats().gaze_mode, sph::GazeMode::Fallback);
   EXPECT_TRUE(rig.sim->surfaceDistanceTracking());
   // Falling back means surface refinement: the surface layer is split.
-  EXPECT_GT(rig.sim->particles().countOf(sph::SizeClass::Small), 100u);
+  EXPECT_GT(rig.sim->particles().countOf(sph::Level{0}), 100u);
 }
 
 TEST(AdaptiveMethods, BadSettingsAreRejected) {
   const sph::Scene scene = poolScene(0.5, 0.5, 500);
   sph::AdaptiveConfig config;
   config.gaze_ring_radius = 0.01;  // smaller than the circle
-  EXPECT_THROW(sph::AdaptiveController(sph::Method::Gaze, config, cameraOf(scene)), std::invalid_argument);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Gaze, 4, config, cameraOf(scene)), std::invalid_argument);
   config = {};
   config.alpha = std::nan("");
-  EXPECT_THROW(sph::AdaptiveController(sph::Method::Surface, config, cameraOf(scene)), std::invalid_argument);
-  EXPECT_THROW(sph::AdaptiveController(sph::Method::Regular, {}, cameraOf(scene)), std::invalid_argument);
-  EXPECT_EQ(sph::makeAdaptiveController(sph::Method::Regular, {}, cameraOf(scene)), nullptr);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Surface, 4, config, cameraOf(scene)), std::invalid_argument);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Regular, 4, {}, cameraOf(scene)), std::invalid_argument);
+  EXPECT_EQ(sph::makeAdaptiveController(sph::Method::Regular, 4, {}, cameraOf(scene)), nullptr);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Foveated, sph::kMaxLevels + 1, {}, cameraOf(scene)),
+               std::invalid_argument);
+  EXPECT_THROW(sph::AdaptiveController(sph::Method::Foveated, 1, {}, cameraOf(scene)), std::invalid_argument);
   sph::Method m;
   EXPECT_FALSE(sph::methodByName("eye", m));
   ASSERT_TRUE(sph::methodByName("hybrid", m));

@@ -15,7 +15,7 @@
 
 namespace adaptive_test {
 
-// A resting pool: `large` LARGE particles of water filling a box of the given footprint from the
+// A resting pool: `large` L1 particles of water filling a box of the given footprint from the
 // floor up (so the count sets the depth: one layer of a 0.5 x 0.5 footprint holds 324).
 inline sph::Scene poolScene(double width, double length, int large) {
   sph::Scene scene;
@@ -50,8 +50,8 @@ struct Rig {
 
 inline Rig makeRig(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config = {}) {
   Rig rig;
-  rig.sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method));
-  auto controller = sph::makeAdaptiveController(method, config, cameraOf(scene));
+  rig.sim = std::make_unique<sph::Simulation>(scene, sph::startLevel(method, scene.params.levels));
+  auto controller = sph::makeAdaptiveController(method, scene.params.levels, config, cameraOf(scene));
   rig.controller = controller.get();
   rig.sim->setAdaptiveStep(std::move(controller));
   return rig;
@@ -72,14 +72,14 @@ struct Snapshot {
   std::vector<std::uint32_t> id;
   std::vector<sph::Vec3> position;
   std::vector<sph::Vec3> velocity;
-  std::vector<sph::SizeClass> size_class;
+  std::vector<sph::Level> level;
 };
 
-inline Snapshot snapshotOf(const sph::ParticleSet& p) { return {p.id, p.position, p.velocity, p.size_class}; }
+inline Snapshot snapshotOf(const sph::ParticleSet& p) { return {p.id, p.position, p.velocity, p.level}; }
 
 inline void expectSameBits(const Snapshot& one, const Snapshot& two) {
   ASSERT_EQ(one.id, two.id);
-  ASSERT_EQ(one.size_class, two.size_class);
+  ASSERT_EQ(one.level, two.level);
   ASSERT_EQ(std::memcmp(one.position.data(), two.position.data(), one.position.size() * sizeof(sph::Vec3)), 0);
   ASSERT_EQ(std::memcmp(one.velocity.data(), two.velocity.data(), one.velocity.size() * sizeof(sph::Vec3)), 0);
 }
@@ -88,11 +88,11 @@ inline void expectSameBits(const Snapshot& one, const Snapshot& two) {
 // binary multiples, and the double sum of up to 20,000 of them is exact).
 inline void expectMassByClass(const sph::Simulation& sim, double initial_mass) {
   const sph::ParticleSet& p = sim.particles();
-  const auto levels = sim.params().classes();
+  const auto levels = sim.params().levelProps();
   double expected = 0.0;
-  for (int k = 0; k < sph::kSizeClassCount; ++k) {
+  for (int k = 0; k < sph::kMaxLevels; ++k) {
     expected +=
-        static_cast<double>(static_cast<float>(levels[k].mass)) * static_cast<double>(p.countOf(sph::sizeLevel(k)));
+        static_cast<double>(static_cast<float>(levels[k].mass)) * static_cast<double>(p.countOf(sph::asLevel(k)));
   }
   EXPECT_EQ(p.totalMass(), expected);
   EXPECT_EQ(p.totalMass(), initial_mass);

@@ -46,18 +46,18 @@ sph::GazeInput wanderingGaze(int frame) {
 
 // Particles (by id: the arrays are re-sorted) whose level differs from before, or that are new.
 struct Levels {
-  std::map<std::uint32_t, sph::SizeClass> by_id;
+  std::map<std::uint32_t, sph::Level> by_id;
 };
 Levels levelsOf(const sph::ParticleSet& p) {
   Levels l;
-  for (std::size_t i = 0; i < p.size(); ++i) l.by_id[p.id[i]] = p.size_class[i];
+  for (std::size_t i = 0; i < p.size(); ++i) l.by_id[p.id[i]] = p.level[i];
   return l;
 }
 int levelChanges(const Levels& before, const sph::ParticleSet& p) {
   int changes = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto it = before.by_id.find(p.id[i]);
-    changes += it == before.by_id.end() || it->second != p.size_class[i];
+    changes += it == before.by_id.end() || it->second != p.level[i];
   }
   return changes;
 }
@@ -86,7 +86,7 @@ void expectExactAndHealthy(const char* preset) {
     expectMassByClass(*rig.sim, initial);
     expectHealthy(*rig.sim);
     int present = 0;
-    for (int k = 0; k < sph::kSizeClassCount; ++k) present += rig.sim->particles().countOf(sph::sizeLevel(k)) > 0;
+    for (int k = 0; k < sph::kMaxLevels; ++k) present += rig.sim->particles().countOf(sph::asLevel(k)) > 0;
     levels_seen = std::max(levels_seen, present);
   }
   EXPECT_GT(changes, 300) << "the wandering gaze should change many particles' levels";
@@ -165,7 +165,7 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
   }
   const sph::ParticleSet& p = rig.sim->particles();
   int levels_present = 0;
-  for (int k = 0; k < sph::kSizeClassCount; ++k) levels_present += p.countOf(sph::sizeLevel(k)) > 0;
+  for (int k = 0; k < sph::kMaxLevels; ++k) levels_present += p.countOf(sph::asLevel(k)) > 0;
   const double rms = rms_sum / kLast;
   const double density_error = interiorDensityError(p, scene.params.rest_density);
   std::printf(
@@ -229,12 +229,12 @@ TEST(Foveated, ATankUnderASweepingGazeWithAMergeHoldStaysAtRest) {
 }
 
 // Water spread on the floor thinner than a coarse particle is wide: the shallow rule keeps it at
-// LARGE and finer, so it keeps its volume (a layer of coarse particles reads a low density and
+// L1 and finer, so it keeps its volume (a layer of coarse particles reads a low density and
 // swells the water's sum m / rho, by 38 % without the rule; the water starts at the coarsest
 // level). A film a particle thick reads a few per cent light as its particles lie: settled from
 // its splits gently (pbf/still_water_changes.h), 2.4 %; shaken into place, 1-4 %.
 TEST(Foveated, ShallowWaterOnTheFloorKeepsItsVolume) {
-  sph::Scene scene = poolScene(0.5, 0.5, 360);  // about 1.1 LARGE layers
+  sph::Scene scene = poolScene(0.5, 0.5, 360);  // about 1.1 L1 layers
   ASSERT_TRUE(sph::presetByName("pbf", scene.params));
   scene.boundary.box.max.y() = 0.3;
   Rig rig = foveatedRig(scene);
@@ -246,18 +246,18 @@ TEST(Foveated, ShallowWaterOnTheFloorKeepsItsVolume) {
   int coarser_than_large = 0;
   double volume = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    coarser_than_large += sph::classIndex(p.size_class[i]) > 1;
+    coarser_than_large += sph::levelIndex(p.level[i]) > 1;
     volume += p.mass[i] / p.density[i];
   }
   const double swell = volume / (p.totalMass() / scene.params.rest_density) - 1.0;
-  std::printf("shallow water: %d of %zu particles coarser than LARGE, sum m / rho %+.2f %%\n", coarser_than_large,
+  std::printf("shallow water: %d of %zu particles coarser than L1, sum m / rho %+.2f %%\n", coarser_than_large,
               p.size(), 100.0 * swell);
   EXPECT_EQ(coarser_than_large, 0);
   EXPECT_LT(std::abs(swell), 0.03);
 }
 
 // The real-time governor's periphery gain coarsens the water around the gaze, not the particle the
-// gaze falls on: at g = 16 that particle stays as fine as g = 1 allows it (LARGE or finer in this
+// gaze falls on: at g = 16 that particle stays as fine as g = 1 allows it (L1 or finer in this
 // view, where the eye allows a particle a degree off the gaze L3 at that gain).
 TEST(Foveated, ThePeripheryGainSparesTheGazePoint) {
   sph::Scene scene = surgeScene("pbf");
@@ -292,7 +292,7 @@ TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
   const sph::ParticleSet& p = rig.sim->particles();
   const sph::ScreenCamera camera = cameraOf(scene);
   const sph::Projector projector(camera);
-  const auto levels = scene.params.classes();
+  const auto levels = scene.params.levelProps();
   const Eigen::Vector4d depth_row = -camera.view.row(2).transpose();
   const double tan_half = std::tan(0.5 * scene.adaptive.foveated_display_fov_deg * M_PI / 180.0);
   const auto direction = [&](double sx, double sy) {
@@ -323,10 +323,10 @@ TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
     // method's single precision: a level is a factor 1.26 apart.
     const double allowed = sph::acuityRatio(scene.adaptive, e) * depthOf(i) / fovea_depth;
     int level = 0;
-    while (level + 1 < sph::kSizeClassCount && levels[level + 1].radius / levels[0].radius <= allowed / 0.95) ++level;
+    while (level + 1 < sph::kMaxLevels && levels[level + 1].radius / levels[0].radius <= allowed / 0.95) ++level;
     ++near_gaze;
     finest_needed += level == 0;
-    too_coarse += sph::classIndex(p.size_class[i]) > level;
+    too_coarse += sph::levelIndex(p.level[i]) > level;
   }
   std::printf("new fovea: %d seen particles within 2 degrees (%d need the finest level), %d too coarse\n", near_gaze,
               finest_needed, too_coarse);
@@ -335,3 +335,60 @@ TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
 }
 
 }  // namespace
+
+// A camera inside the water (a headset, a client's pose just over the floor): the water behind the
+// eye is not seen and stays at the coarsest level, its top layers (not hidden by water above) as
+// well; only grading next to the water in front may hold it finer, within a couple of coarse
+// supports of the eye.
+TEST(Foveated, WaterBehindTheEyeStaysCoarsest) {
+  sph::Scene scene = poolScene(0.4, 1.0, 5000);  // 0.25 m deep
+  ASSERT_TRUE(sph::presetByName("pbf", scene.params));
+  scene.boundary.box.max.y() = 0.6;
+  Rig rig = foveatedRig(scene);
+  sph::ScreenCamera camera = cameraOf(scene);
+  const Eigen::Vector3d eye(0.2, 0.12, 0.3);
+  camera.view = sph::lookAt(eye, Eigen::Vector3d(0.2, 0.12, 0.4), Eigen::Vector3d::UnitY());
+  rig.controller->setCamera(camera);
+  for (int s = 0; s < 30; ++s) {
+    rig.controller->setGaze(gazeAt(0.5, 0.5));
+    rig.sim->step();
+  }
+  const sph::ParticleSet& p = rig.sim->particles();
+  const int coarsest = scene.params.levels - 1;
+  const double reach = 2.0 * scene.params.levelProps()[static_cast<std::size_t>(coarsest)].support;
+  int behind = 0, finer_behind = 0, finest_behind = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double along = p.position[i].z() - eye.z();  // the view direction is +z
+    const int level = sph::levelIndex(p.level[i]);
+    if (along >= 0.0) continue;
+    finest_behind += level == 0;
+    if (along > -reach) continue;
+    ++behind;
+    finer_behind += level < coarsest;
+  }
+  ASSERT_GT(behind, 100) << "the pose should leave water behind the eye";
+  EXPECT_GE(rig.controller->lastStats().fovea_level, 0) << "the gaze should fall on the water in front";
+  EXPECT_EQ(finest_behind, 0) << "no L0 particle behind the eye";
+  EXPECT_EQ(finer_behind, 0) << "of " << behind << " particles behind the eye, finer than L" << coarsest;
+}
+
+// Any level count from 2 to 8: the water starts at the coarsest and reaches L0 at the gaze point,
+// mass exact by level.
+TEST(Foveated, SixLevelsStartCoarsestAndRefineAtTheGaze) {
+  sph::Scene scene = restingTank();
+  scene.params.levels = 6;
+  Rig rig = foveatedRig(scene);
+  const sph::ParticleSet& p = rig.sim->particles();
+  const double initial = p.totalMass();
+  EXPECT_GT(p.countOf(sph::asLevel(5)), 0u);
+  // The gaze on the middle of the water's surface.
+  const sph::Projector projector(cameraOf(scene));
+  const sph::FastScreenDisc centre = projector.projectFast(sph::Vec3(0.2f, 0.24f, 0.2f), 0.0f);
+  for (int s = 0; s < 20; ++s) {
+    rig.controller->setGaze(gazeAt(centre.x, centre.y));
+    rig.sim->step();
+    expectMassByClass(*rig.sim, initial);
+  }
+  EXPECT_GT(rig.sim->particles().countOf(sph::Level{0}), 0u);
+  EXPECT_EQ(rig.sim->particles().countOf(sph::asLevel(6)), 0u);
+}

@@ -1,4 +1,4 @@
-// Water of both size classes at rest: SMALL water over LARGE water must stay where it is. The two
+// Water of both size classes at rest: L0 water over L1 water must stay where it is. The two
 // classes have the same rest density, so a class that sinks through the other is a force that
 // weighs them differently (pair_kernel.inc: the mixed pairs' kernel), not physics.
 #include <gtest/gtest.h>
@@ -17,19 +17,19 @@ namespace {
 using adaptive_test::poolScene;
 
 struct Layering {
-  int small_sunk = 0;   // SMALL particles more than a SMALL spacing below the interface
-  int large_risen = 0;  // LARGE particles more than a SMALL spacing above it
+  int small_sunk = 0;   // L0 particles more than an L0 spacing below the interface
+  int large_risen = 0;  // L1 particles more than an L0 spacing above it
   int small_count = 0;
   int large_count = 0;
   double rms_speed = 0.0;
 };
 
-// A LARGE pool at rest whose upper half is then split into SMALL water, run `frames` more.
+// An L1 pool at rest whose upper half is then split into L0 water, run `frames` more.
 Layering smallOverLarge(const char* preset, int frames) {
   sph::Scene scene = poolScene(0.3, 0.3, 1500);
   EXPECT_TRUE(sph::presetByName(preset, scene.params));
   scene.boundary.box.max.y() = 0.6;
-  sph::Simulation sim(scene, sph::SizeClass::Large);
+  sph::Simulation sim(scene, sph::Level{1});
   for (int s = 0; s < 150; ++s) sim.step();
   float top = 0.0f;
   for (const sph::Vec3& x : sim.particles().position) top = std::max(top, x.y());
@@ -50,7 +50,7 @@ Layering smallOverLarge(const char* preset, int frames) {
   double v2 = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     v2 += p.velocity[i].squaredNorm();
-    if (p.size_class[i] == sph::SizeClass::Small) {
+    if (p.level[i] == sph::Level{0}) {
       ++out.small_count;
       out.small_sunk += p.position[i].y() < interface_y - margin;
     } else {
@@ -59,14 +59,14 @@ Layering smallOverLarge(const char* preset, int frames) {
     }
   }
   out.rms_speed = std::sqrt(v2 / static_cast<double>(p.size()));
-  std::printf("%s, %d frames after the split: %d of %d SMALL sunk, %d of %d LARGE risen, rms %.4f m/s\n", preset,
-              frames, out.small_sunk, out.small_count, out.large_risen, out.large_count, out.rms_speed);
+  std::printf("%s, %d frames after the split: %d of %d L0 sunk, %d of %d L1 risen, rms %.4f m/s\n", preset, frames,
+              out.small_sunk, out.small_count, out.large_risen, out.large_count, out.rms_speed);
   return out;
 }
 
 void expectLayersStay(const char* preset) {
   const Layering l = smallOverLarge(preset, 300);
-  // With the thesis's averaged kernel (3.35) SMALL particles sank through the LARGE ones and the
+  // With the thesis's averaged kernel (3.35) L0 particles sank through the L1 ones and the
   // pool turned over slowly, with both presets. With the mean support's kernel (pair_kernels.h)
   // only a few particles cross and the pool stays near rest, in either instruction set; the bounds
   // below tell the two apart.

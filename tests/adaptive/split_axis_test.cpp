@@ -1,4 +1,4 @@
-// Where a split on incompressible water puts its children (split_axis.h): on a LARGE lattice away
+// Where a split on incompressible water puts its children (split_axis.h): on an L1 lattice away
 // from the neighbours, at a free surface within the surface, at a wall along it.
 #include <gtest/gtest.h>
 
@@ -14,31 +14,31 @@
 
 namespace {
 
-// An n^3 block of LARGE particles on their rest lattice (the pbf preset's masses) pressed by
+// An n^3 block of L1 particles on their rest lattice (the pbf preset's masses) pressed by
 // 0.5 %, so that no neighbour lies on the support's edge (two spacings: rounding would take one
 // side's and not the other's), its corner at the origin, in a box `room` wider than the block on
 // every side.
 struct LatticeBlock {
   int n;
   float spacing;  // the block's, 0.995 d_L
-  float wanted;   // half the children's distance: half the LARGE radius, as the split asks
-  float margin;   // the SMALL radius
+  float wanted;   // half the children's distance: half the L1 radius, as the split asks
+  float margin;   // the L0 radius
   sph::ParticleSet particles;
   sph::NeighborGrid grid;
   sph::BoxState box;
 
   LatticeBlock(int n_, double room) : n(n_), particles(static_cast<std::size_t>(n_) * n_ * n_) {
     const sph::SimParams params = sph::pbfPreset();
-    const auto classes = params.classes();
-    const sph::SizeClassProps large = classes[sph::classIndex(sph::SizeClass::Large)];
+    const auto classes = params.levelProps();
+    const sph::LevelProps large = classes[sph::levelIndex(sph::Level{1})];
     spacing = 0.995f * static_cast<float>(std::cbrt(large.mass / params.rest_density));
     wanted = 0.5f * static_cast<float>(large.radius);
-    margin = static_cast<float>(classes[sph::classIndex(sph::SizeClass::Small)].radius);
+    margin = static_cast<float>(classes[sph::levelIndex(sph::Level{0})].radius);
     for (int z = 0; z < n; ++z) {
       for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
           particles.add(spacing * sph::Vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)),
-                        sph::Vec3::Zero(), sph::SizeClass::Large, large);
+                        sph::Vec3::Zero(), sph::Level{1}, large);
         }
       }
     }
@@ -94,7 +94,7 @@ TEST(SplitAxis, AtTheFreeSurfaceTheChildrenStayInIt) {
   }
 }
 
-// A parent in the wall layer (the lattice's half spacing from the floor, all but the SMALL
+// A parent in the wall layer (the lattice's half spacing from the floor, all but the L0
 // radius the children keep off it) splits along the floor, never into it.
 TEST(SplitAxis, AtAWallTheChildrenGoAlongIt) {
   LatticeBlock block(7, 0.0);

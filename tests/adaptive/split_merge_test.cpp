@@ -29,7 +29,7 @@ void prepare(sph::Simulation& sim) {
 }
 
 TEST(SplitMerge, SplitKeepsMassMomentumAndCentreOfMass) {
-  sph::Simulation sim(poolScene(0.4, 0.4, 600), sph::SizeClass::Large);
+  sph::Simulation sim(poolScene(0.4, 0.4, 600), sph::Level{1});
   prepare(sim);
   sph::ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
@@ -47,7 +47,7 @@ TEST(SplitMerge, SplitKeepsMassMomentumAndCentreOfMass) {
   EXPECT_EQ(counts.splits, static_cast<int>(n));
   EXPECT_EQ(counts.merges, 0);
   ASSERT_EQ(p.size(), 2 * n);
-  EXPECT_EQ(p.countOf(sph::SizeClass::Small), 2 * n);
+  EXPECT_EQ(p.countOf(sph::Level{0}), 2 * n);
   EXPECT_EQ(p.totalMass(), mass_before);
   EXPECT_LT((momentum(p) - momentum_before).norm(), 1e-9 * (1.0 + momentum_before.norm()));
   Eigen::Vector3d centre_after = Eigen::Vector3d::Zero();
@@ -77,7 +77,7 @@ TEST(SplitMerge, InABoxCornerTheChildrenLandAParentRadiusApart) {
   sph::Scene scene = poolScene(0.3, 0.3, 1500);
   ASSERT_TRUE(sph::presetByName("pbf", scene.params));
   scene.boundary.box.max.y() = 0.6;
-  sph::Simulation sim(scene, sph::SizeClass::Large);
+  sph::Simulation sim(scene, sph::Level{1});
   for (int s = 0; s < 5; ++s) sim.step();
   sph::ParticleSet& p = sim.particles();
   const sph::BoxState box = sim.boxNow();
@@ -107,7 +107,7 @@ TEST(SplitMerge, InABoxCornerTheChildrenLandAParentRadiusApart) {
 }
 
 TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
-  sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::SizeClass::Small);
+  sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::Level{0});
   prepare(sim);
   sph::ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
@@ -117,7 +117,7 @@ TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
   std::vector<std::int8_t> decision(n, sph::kMerge);
   std::vector<std::int32_t> partner(n, -1);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(p, sim.grid(), decision, partner, sph::SizeClass::Large, partner_scratch);
+  sph::choosePartners(p, sim.grid(), decision, partner, sph::Level{1}, partner_scratch);
   // Every particle is in at most one mutual pair.
   std::vector<int> pair_count(n, 0);
   int pairs = 0;
@@ -138,20 +138,20 @@ TEST(SplitMerge, MergeKeepsMassAndMomentumAndPairsEachParticleOnce) {
   const auto counts = sph::applySplitMerge(sim, decision, partner, keep, slots);
   EXPECT_EQ(counts.merges, pairs);
   EXPECT_EQ(p.size(), n - static_cast<std::size_t>(pairs));
-  EXPECT_EQ(p.countOf(sph::SizeClass::Large), static_cast<std::size_t>(pairs));
+  EXPECT_EQ(p.countOf(sph::Level{1}), static_cast<std::size_t>(pairs));
   EXPECT_EQ(p.totalMass(), mass_before);
   EXPECT_LT((momentum(p) - momentum_before).norm(), 1e-6 * (1.0 + momentum_before.norm()));
 }
 
 TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
-  sph::Simulation sim(poolScene(0.3, 0.3, 300), sph::SizeClass::Large);
+  sph::Simulation sim(poolScene(0.3, 0.3, 300), sph::Level{1});
   prepare(sim);
   sph::ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   std::vector<std::int8_t> merge_all(n, sph::kMerge);
   std::vector<std::int32_t> partner(n, 0);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(p, sim.grid(), merge_all, partner, sph::SizeClass::Large, partner_scratch);
+  sph::choosePartners(p, sim.grid(), merge_all, partner, sph::Level{1}, partner_scratch);
   for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(partner[i], -1);
 
   std::vector<std::int8_t> split_all(n, sph::kSplit);
@@ -167,7 +167,7 @@ TEST(SplitMerge, LargeParticlesAreNeverMergedAndSmallNeverSplit) {
 
 // Splitting every particle of a fluid at rest changes its mean density by less than 5 %.
 TEST(SplitMerge, SplittingARestingFluidKeepsItsMeanDensity) {
-  sph::Simulation sim(poolScene(0.5, 0.5, 1500), sph::SizeClass::Large);
+  sph::Simulation sim(poolScene(0.5, 0.5, 1500), sph::Level{1});
   sim.rebuildNeighbors();
   sph::computeDensityPressure(sim.params(), sph::makeKernelTable(sim.params()), sim.grid(), sim.particles());
   auto meanDensity = [&] {
@@ -203,7 +203,7 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   sph::Scene scene = poolScene(0.3, 0.3, 1500);
   ASSERT_TRUE(sph::presetByName(preset, scene.params));
   scene.boundary.box.max.y() = 0.6;
-  sph::Simulation sim(scene, sph::SizeClass::Large);
+  sph::Simulation sim(scene, sph::Level{1});
   const double initial_mass = sim.particles().totalMass();
   auto rms = [&] {
     double v2 = 0.0;
@@ -262,7 +262,7 @@ void expectSplittingOrMergingARestingPoolDoesNotKickIt(const char* preset, const
   std::vector<std::int8_t> merge_all(m, sph::kMerge);
   std::vector<std::int32_t> partner(m, -1);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(sim.particles(), sim.grid(), merge_all, partner, sph::SizeClass::Large, partner_scratch);
+  sph::choosePartners(sim.particles(), sim.grid(), merge_all, partner, sph::Level{1}, partner_scratch);
   const auto counts = sph::applySplitMerge(sim, merge_all, partner, keep, slots);
   ASSERT_GT(counts.merges, static_cast<int>(m / 4));
   sim.step();
@@ -297,11 +297,11 @@ TEST(SplitMerge, SplittingOrMergingARestingDfsphPoolDoesNotThrowIt) {
 
 // The AVX-512 search (16 neighbours at a time, each lane keeping its own best) must choose exactly
 // as the scalar one: on the water's lattice as filled (many equal distances, so the id decides),
-// then on a mixed set (LARGE particles, which never pair, among the SMALL ones); every fifth
+// then on a mixed set (L1 particles, which never pair, among the L0 ones); every fifth
 // particle does not want to merge.
 TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
   if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
-  sph::Simulation sim(poolScene(0.4, 0.4, 1200), sph::SizeClass::Small);
+  sph::Simulation sim(poolScene(0.4, 0.4, 1200), sph::Level{0});
   sph::ParticleSet& p = sim.particles();
   for (int round = 0; round < 2; ++round) {
     sim.rebuildNeighbors();
@@ -310,21 +310,21 @@ TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
     for (std::size_t i = 0; i < n; i += 5) decision[i] = sph::kRemain;
     std::vector<std::int32_t> vector_choice(n, 7), scalar_choice(n, 7);
     sph::PartnerScratch scratch;
-    sph::avx512::choosePartners(p, sim.grid(), decision, vector_choice, sph::SizeClass::Large, scratch);
-    sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, sph::SizeClass::Large, scratch);
+    sph::avx512::choosePartners(p, sim.grid(), decision, vector_choice, sph::Level{1}, scratch);
+    sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, sph::Level{1}, scratch);
     EXPECT_EQ(vector_choice, scalar_choice) << "round " << round;
     std::size_t paired = 0;
     for (std::int32_t c : scalar_choice) paired += c >= 0;
     EXPECT_GT(paired, n / 2) << "round " << round;
-    // Merge the mutual pairs within the first third: round 2 searches a mixed set, LARGE
-    // particles among the SMALL ones.
+    // Merge the mutual pairs within the first third: round 2 searches a mixed set, L1
+    // particles among the L0 ones.
     std::vector<std::uint8_t> keep;
     std::vector<std::uint32_t> slots;
     std::vector<std::int32_t> merge_some(scalar_choice);
     for (std::size_t i = n / 3; i < n; ++i) merge_some[i] = -1;
     sph::applySplitMerge(sim, decision, merge_some, keep, slots);
   }
-  EXPECT_GT(p.countOf(sph::SizeClass::Large), 0u);
+  EXPECT_GT(p.countOf(sph::Level{1}), 0u);
 }
 
 TEST(SplitMerge, SplitDirectionIsAUnitVectorThatDependsOnTheId) {
@@ -339,14 +339,14 @@ TEST(SplitMerge, SplitDirectionIsAUnitVectorThatDependsOnTheId) {
 
 namespace {
 
-// A SMALL particle that wants to merge but has no merging SMALL neighbour within reach would stay
-// SMALL for good; stragglers pair among themselves within two SMALL support radii.
+// An L0 particle that wants to merge but has no merging L0 neighbour within reach would stay
+// L0 for good; stragglers pair among themselves within two L0 support radii.
 TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
-  sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::SizeClass::Small);
+  sph::Simulation sim(poolScene(0.4, 0.4, 500), sph::Level{0});
   prepare(sim);
   sph::ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
-  const float h = static_cast<float>(sim.params().classes()[0].support);
+  const float h = static_cast<float>(sim.params().levelProps()[0].support);
   const std::size_t a = 0;
   std::size_t b = n, c = n;
   for (std::size_t i = 1; i < n; ++i) {
@@ -365,11 +365,11 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   decision[a] = decision[b] = decision[c] = sph::kMerge;
   std::vector<std::int32_t> partner(n, 0);
   sph::PartnerScratch partner_scratch;
-  sph::choosePartners(p, sim.grid(), decision, partner, sph::SizeClass::Large, partner_scratch);
+  sph::choosePartners(p, sim.grid(), decision, partner, sph::Level{1}, partner_scratch);
   ASSERT_EQ(partner[a], -1) << "no merging neighbour within reach";
   ASSERT_EQ(partner[b], -1);
   sph::StragglerScratch scratch;
-  sph::pairStragglers(p, decision, partner, 2.0f, sph::SizeClass::Large, scratch);
+  sph::pairStragglers(p, decision, partner, 2.0f, sph::Level{1}, scratch);
   EXPECT_EQ(partner[a], static_cast<std::int32_t>(b));
   EXPECT_EQ(partner[b], static_cast<std::int32_t>(a));
   EXPECT_EQ(partner[c], -1) << "too far from every other straggler";
@@ -379,22 +379,22 @@ TEST(SplitMerge, StragglersPairWithinTwoSupportRadiiOnly) {
   std::vector<std::uint32_t> slots;
   const auto counts = sph::applySplitMerge(sim, decision, partner, keep, slots);
   EXPECT_EQ(counts.merges, 1);
-  EXPECT_EQ(p.countOf(sph::SizeClass::Large), 1u);
+  EXPECT_EQ(p.countOf(sph::Level{1}), 1u);
   EXPECT_EQ(p.totalMass(), mass);
 }
 
 // The sweep along x must pair exactly as comparing every two stragglers would: mutual nearest
 // within the distance, ties to the lower index. A lattice (many equal distances) with gaps.
 TEST(SplitMerge, StragglerSweepPairsAsTheQuadraticSearch) {
-  const auto classes = sph::thesisPreset().classes();
-  const auto& small = classes[sph::classIndex(sph::SizeClass::Small)];
+  const auto classes = sph::thesisPreset().levelProps();
+  const auto& small = classes[sph::levelIndex(sph::Level{0})];
   sph::ParticleSet p(400);
   const float spacing = 0.03f;
   for (int k = 0; k < 1000 && p.size() < 400; ++k) {
     if ((k * 7919) % 5 == 0) continue;  // gaps, so some stragglers lose their nearest
     const sph::Vec3 x(spacing * static_cast<float>(k % 10), spacing * static_cast<float>((k / 10) % 10),
                       spacing * static_cast<float>(k / 100));
-    p.add(x, sph::Vec3::Zero(), sph::SizeClass::Small, small);
+    p.add(x, sph::Vec3::Zero(), sph::Level{0}, small);
   }
   const std::size_t n = p.size();
   // The reach is in support radii: 1.2 spacings.
@@ -432,7 +432,7 @@ TEST(SplitMerge, StragglerSweepPairsAsTheQuadraticSearch) {
 
   std::vector<std::int32_t> partner(n, -1);
   sph::StragglerScratch scratch;
-  sph::pairStragglers(p, decision, partner, reach, sph::SizeClass::Large, scratch);
+  sph::pairStragglers(p, decision, partner, reach, sph::Level{1}, scratch);
   EXPECT_EQ(partner, expected);
 }
 

@@ -98,7 +98,7 @@ TEST(BenchRun, InterleavedRunsMatchRunsAlone) {
     ASSERT_EQ(turns.records.size(), 12u) << alone.method;
     EXPECT_EQ(turns.mass_end, alone.mass_end) << alone.method;
     for (std::size_t f = 0; f < alone.records.size(); ++f) {
-      EXPECT_EQ(turns.records[f].n_small, alone.records[f].n_small) << alone.method << " frame " << f;
+      EXPECT_EQ(turns.records[f].by_level, alone.records[f].by_level) << alone.method << " frame " << f;
       EXPECT_EQ(turns.records[f].mean_density_ratio, alone.records[f].mean_density_ratio)
           << alone.method << " frame " << f;
     }
@@ -139,7 +139,7 @@ TEST(BenchRun, RunContinuedFromACheckpointEndsWhereTheUninterruptedOneDoes) {
 // The run's result reads the water at its last frame: a pbf pool over the whole floor, at rest
 // from the start, stands at the depth its mass fills at rho0 (water_level.h), and the summary says so.
 TEST(BenchRun, ResultReadsTheWaterLevelAtTheEnd) {
-  sph::Scene s = tinyScene(0.5, 1058);  // 4 full SMALL layers of 23 x 23
+  sph::Scene s = tinyScene(0.5, 1058);  // 4 full L0 layers of 23 x 23
   s.water.max.y() = 0.12;
   s.params = sph::pbfPreset();
   bench::RunOptions options;

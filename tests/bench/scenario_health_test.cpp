@@ -20,7 +20,7 @@ void expectHealthyRun(const std::string& scene_name, const std::string& method, 
     recording = gaze::readGazeRecording(s.gaze_recording);
     options.gaze = &recording;
   }
-  const auto levels = s.params.classes();
+  const auto levels = s.params.levelProps();
   const auto massOf = [&](int level) { return static_cast<double>(static_cast<float>(levels[level].mass)); };
   std::size_t worst_outside = 0;
   std::size_t worst_nan = 0;
@@ -28,8 +28,9 @@ void expectHealthyRun(const std::string& scene_name, const std::string& method, 
   options.on_frame = [&](const sph::Simulation& sim, const bench::FrameRecord& r) {
     worst_outside = std::max(worst_outside, r.outside_box);
     worst_nan = std::max(worst_nan, r.nan_values);
-    const double by_level = massOf(0) * static_cast<double>(r.n_small) + massOf(1) * static_cast<double>(r.n_large) +
-                            massOf(2) * static_cast<double>(r.n_l2) + massOf(3) * static_cast<double>(r.n_l3);
+    double by_level = 0.0;
+    for (int k = 0; k < sph::kMaxLevels; ++k)
+      by_level += massOf(k) * static_cast<double>(r.by_level[static_cast<std::size_t>(k)]);
     mass_mismatches += sim.particles().totalMass() != by_level;
   };
   const bench::RunResult run = bench::runScene(s, method, options);
@@ -39,7 +40,7 @@ void expectHealthyRun(const std::string& scene_name, const std::string& method, 
   EXPECT_EQ(mass_mismatches, 0u);
   EXPECT_EQ(run.mass_start, run.mass_end);
   if (method == "regular") {
-    EXPECT_EQ(run.records.back().n_small, 20000u);
+    EXPECT_EQ(run.records.back().by_level[0], 20000u);
   }
 }
 

@@ -36,11 +36,11 @@ TEST(Validation, ALateFrontIsLateAndAShiftRepairsIt) {
 
 TEST(Validation, FrontIgnoresAFewSprayParticles) {
   sph::ParticleSet p(4000);
-  sph::SizeClassProps props;
+  sph::LevelProps props;
   props.mass = 998.29e-6;  // a 10 mm lattice
   for (int i = 0; i < 3000; ++i)
-    p.add(sph::Vec3(0.01f * (i % 30) + 0.005f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::SizeClass::Small, props);
-  p.add(sph::Vec3(2.0f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::SizeClass::Small, props);  // a drop far ahead
+    p.add(sph::Vec3(0.01f * (i % 30) + 0.005f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::Level{0}, props);
+  p.add(sph::Vec3(2.0f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::Level{0}, props);  // a drop far ahead
   EXPECT_NEAR(bench::surgeFrontX(p, 998.29), 0.30, 1e-4);
   const bench::Column c = bench::measureColumn(p, 998.29, 0.0);
   EXPECT_NEAR(c.width, 2.005, 1e-4) << "the column is measured at the start, before any spray";
@@ -49,11 +49,11 @@ TEST(Validation, FrontIgnoresAFewSprayParticles) {
 TEST(Validation, ColumnReportsTheCompressionItIsReleasedWith) {
   const double rho0 = 998.29;
   sph::ParticleSet p(4);
-  sph::SizeClassProps props;
+  sph::LevelProps props;
   props.mass = rho0 * 1e-6;                               // a 10 mm lattice
   const float densities[4] = {0.9f, 1.0f, 1.02f, 1.10f};  // an under-dense surface particle counts as 0
   for (float d : densities) {
-    const std::uint32_t i = p.add(sph::Vec3(0.005f, 0.005f, 0.005f), sph::Vec3::Zero(), sph::SizeClass::Small, props);
+    const std::uint32_t i = p.add(sph::Vec3(0.005f, 0.005f, 0.005f), sph::Vec3::Zero(), sph::Level{0}, props);
     p.density[i] = static_cast<float>(d * rho0);
   }
   const bench::Column c = bench::measureColumn(p, rho0, 0.0);
@@ -69,15 +69,14 @@ TEST(Validation, ColumnReportsTheCompressionItIsReleasedWith) {
 TEST(Validation, HydrostaticLatticeHasSlopeRho0G) {
   const double rho0 = 998.29, s = 0.01;
   sph::ParticleSet p(20000);
-  sph::SizeClassProps props;
+  sph::LevelProps props;
   props.mass = rho0 * s * s * s;
   const int n = 10, layers = 30;
   for (int y = 0; y < layers; ++y) {
     for (int z = 0; z < n; ++z) {
       for (int x = 0; x < n; ++x) {
         const std::size_t i = p.size();
-        p.add(sph::Vec3((x + 0.5f) * s, (y + 0.5f) * s, (z + 0.5f) * s), sph::Vec3::Zero(), sph::SizeClass::Small,
-              props);
+        p.add(sph::Vec3((x + 0.5f) * s, (y + 0.5f) * s, (z + 0.5f) * s), sph::Vec3::Zero(), sph::Level{0}, props);
         p.density[i] = static_cast<float>(rho0 * (x == 0 ? 1.03 : 1.0));  // one wall layer 3 % dense
         p.pressure[i] = static_cast<float>(rho0 * 9.81 * (layers - y - 0.5) * s);
       }

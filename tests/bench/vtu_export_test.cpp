@@ -48,7 +48,7 @@ std::vector<T> values(const std::string& bytes) {
 sph::ParticleSet threeParticles() {
   sph::ParticleSet p;
   p.id = {7, 8, 9};
-  p.size_class = {sph::SizeClass::Small, sph::SizeClass::Large, sph::SizeClass::Small};
+  p.level = {sph::Level{0}, sph::Level{1}, sph::Level{0}};
   p.mass = {0.5f, 1.0f, 0.5f};
   p.radius = {0.01f, 0.0126f, 0.01f};
   p.position = {{0.1f, 0.2f, 0.3f}, {0.4f, 0.5f, 0.6f}, {0.7f, 0.8f, 0.9f}};
@@ -163,6 +163,6 @@ TEST(SnapshotFormats, AllThreeCarryTheSameFieldsAndTheClassAsANumber) {
   std::string header, second_row;
   std::getline(rows, header);
   std::getline(rows, second_row);
-  std::getline(rows, second_row);  // the LARGE particle
+  std::getline(rows, second_row);  // the L1 particle
   EXPECT_EQ(second_row.substr(second_row.rfind(',') + 1), "1") << second_row;
 }

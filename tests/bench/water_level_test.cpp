@@ -27,12 +27,12 @@ struct Pool {
   bench::WaterLevel level() const { return bench::measureWaterLevel(particles, scene, box); }
 };
 
-Pool latticePool(sph::SizeClass size_class, int cells, int layers, double squeeze = 1.0) {
+Pool latticePool(sph::Level size_class, int cells, int layers, double squeeze = 1.0) {
   Pool pool;
   sph::SimParams& params = pool.scene.params;
   EXPECT_TRUE(sph::presetByName("pbf", params));
   pool.rest_density = params.rest_density;
-  const sph::SizeClassProps props = params.classes()[sph::classIndex(size_class)];
+  const sph::LevelProps props = params.levelProps()[sph::levelIndex(size_class)];
   pool.spacing = std::cbrt(props.mass / params.rest_density);
   const double side = cells * pool.spacing;
   pool.scene.boundary.box.max = Eigen::Vector3d(side, 1.0, side);
@@ -51,7 +51,7 @@ Pool latticePool(sph::SizeClass size_class, int cells, int layers, double squeez
 }
 
 TEST(WaterLevel, ALatticeAtRestDensityReadsItsOwnDepth) {
-  for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
+  for (const sph::Level c : {sph::Level{0}, sph::Level{1}}) {
     const Pool pool = latticePool(c, 24, 10);
     const bench::WaterLevel level = pool.level();
     const double depth = 10 * pool.spacing;
@@ -67,7 +67,7 @@ TEST(WaterLevel, ALatticeAtRestDensityReadsItsOwnDepth) {
 // Water whose particles stand off their lattice (each by up to 0.3 spacings on each axis, as
 // moving water does) still reads its depth: the gauge finds where the water ends, not a layer.
 TEST(WaterLevel, DisorderedWaterReadsItsDepth) {
-  Pool pool = latticePool(sph::SizeClass::Small, 24, 10);
+  Pool pool = latticePool(sph::Level{0}, 24, 10);
   std::uint32_t state = 12345;
   auto offset = [&] {  // in [-0.3, 0.3) spacings, a linear congruential sequence
     state = state * 1664525u + 1013904223u;
@@ -82,7 +82,7 @@ TEST(WaterLevel, DisorderedWaterReadsItsDepth) {
 // solvers count it (boundary_volume.h), so the sheet's top reads like the top of deep water.
 TEST(WaterLevel, ASheetOneOrTwoLayersDeepReadsItsDepth) {
   for (const int layers : {1, 2}) {
-    const Pool pool = latticePool(sph::SizeClass::Small, 24, layers);
+    const Pool pool = latticePool(sph::Level{0}, 24, layers);
     const bench::WaterLevel level = pool.level();
     std::printf("%d layers: level %.5f m against %.5f m\n", layers, level.depth, level.incompressible_depth);
     EXPECT_EQ(level.wet, level.gauges);
@@ -93,7 +93,7 @@ TEST(WaterLevel, ASheetOneOrTwoLayersDeepReadsItsDepth) {
 // Water piled against one wall (a wave running into it) reads its volume: the gauges reach the
 // walls, the wall's share of their kernel divided out.
 TEST(WaterLevel, WaterPiledAgainstAWallReadsItsVolume) {
-  Pool pool = latticePool(sph::SizeClass::Small, 24, 12);
+  Pool pool = latticePool(sph::Level{0}, 24, 12);
   std::vector<std::uint8_t> keep(pool.particles.size());
   for (std::size_t i = 0; i < keep.size(); ++i) {  // 12 layers at the wall down to 6 from the 7th column on
     const sph::Vec3& x = pool.particles.position[i];
@@ -112,7 +112,7 @@ TEST(WaterLevel, WaterPiledAgainstAWallReadsItsVolume) {
 // kernel, and the depth the mass fills leaves the obstacles' volume out.
 TEST(WaterLevel, WaterRoundObstaclesReadsItsDepth) {
   for (const bool sphere : {false, true}) {
-    Pool pool = latticePool(sph::SizeClass::Small, 36, 10);
+    Pool pool = latticePool(sph::Level{0}, 36, 10);
     const double centre = pool.box.max.x() / 2.0;
     const Eigen::Vector3d at(centre, 0.0, centre);
     const double radius = (sphere ? 14.0 : 5.0) * pool.spacing;
@@ -138,19 +138,19 @@ TEST(WaterLevel, WaterRoundObstaclesReadsItsDepth) {
 
 // Water squeezed 2 % reads 2 % lower, where its sum m / rho0 fills the same depth as before.
 TEST(WaterLevel, SqueezedWaterReadsLower) {
-  const Pool pool = latticePool(sph::SizeClass::Small, 24, 10, 0.98);
+  const Pool pool = latticePool(sph::Level{0}, 24, 10, 0.98);
   const bench::WaterLevel level = pool.level();
   EXPECT_NEAR(level.depth / level.incompressible_depth, 0.98, 0.004);
 }
 
-// LARGE layers under SMALL ones (the surface method's water at rest): the gauges read the depth
-// both fill together. The SMALL layers' horizontal spacing is the box's side over a whole count,
+// L1 layers under L0 ones (the surface method's water at rest): the gauges read the depth
+// both fill together. The L0 layers' horizontal spacing is the box's side over a whole count,
 // their vertical one keeps them at rest density.
 TEST(WaterLevel, LayersOfBothClassesReadTheirJointDepth) {
-  Pool pool = latticePool(sph::SizeClass::Large, 20, 4);
+  Pool pool = latticePool(sph::Level{1}, 20, 4);
   sph::SimParams params;
   ASSERT_TRUE(sph::presetByName("pbf", params));
-  const sph::SizeClassProps small = params.classes()[sph::classIndex(sph::SizeClass::Small)];
+  const sph::LevelProps small = params.levelProps()[sph::levelIndex(sph::Level{0})];
   const double side = pool.box.max.x();
   const int cells = static_cast<int>(std::lround(side / std::cbrt(small.mass / params.rest_density)));
   const double across = side / cells;
@@ -161,7 +161,7 @@ TEST(WaterLevel, LayersOfBothClassesReadTheirJointDepth) {
       for (int x = 0; x < cells; ++x) {
         const sph::Vec3 at(static_cast<float>((x + 0.5) * across), static_cast<float>(floor_of_small + (y + 0.5) * up),
                            static_cast<float>((z + 0.5) * across));
-        pool.particles.add(at, sph::Vec3::Zero(), sph::SizeClass::Small, small);
+        pool.particles.add(at, sph::Vec3::Zero(), sph::Level{0}, small);
       }
     }
   }
@@ -172,7 +172,7 @@ TEST(WaterLevel, LayersOfBothClassesReadTheirJointDepth) {
 
 // Water over half the floor: the gauges over the other half are dry.
 TEST(WaterLevel, GaugesOverDryFloorReadNothing) {
-  Pool pool = latticePool(sph::SizeClass::Small, 24, 6);
+  Pool pool = latticePool(sph::Level{0}, 24, 6);
   const float half = pool.box.max.x() / 2.0f;
   std::vector<std::uint8_t> keep(pool.particles.size());
   for (std::size_t i = 0; i < keep.size(); ++i) keep[i] = pool.particles.position[i].x() < half;
@@ -208,7 +208,7 @@ TEST(WaterLevel, IncompressibleDepthLeavesOutTheObstacles) {
 
 // No gauge stands on an obstacle.
 TEST(WaterLevel, GaugesStayClearOfObstacles) {
-  Pool pool = latticePool(sph::SizeClass::Small, 24, 4);
+  Pool pool = latticePool(sph::Level{0}, 24, 4);
   const int open = pool.level().gauges;
   const double centre = pool.box.max.x() / 2.0;
   pool.scene.boundary.cylinders.push_back({centre, centre, 0.05});

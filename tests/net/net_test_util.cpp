@@ -24,7 +24,7 @@ std::vector<Eigen::Vector2d> smallOnScreen(const gsph::v1::Frame& frame, const s
   const sph::Projector projector(camera);
   std::vector<Eigen::Vector2d> out;
   for (std::size_t i = 0; i < frame.size_classes().size(); ++i) {
-    if (frame.size_classes()[i] != 0) continue;  // LARGE
+    if (frame.size_classes()[i] != 0) continue;  // L1
     const Eigen::Vector3d p(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
     const sph::ScreenDisc d = projector.project(p, frame.radius_small());
     if (d.in_front) out.emplace_back(d.x, d.y);

@@ -210,12 +210,12 @@ inline double maxAbsDiff(const Eigen::Matrix4d& a, const Eigen::Matrix4d& b) {
 // speaks ZMTP); -1 when this process has no descriptor left. The caller closes it.
 int idleTcpConnection(const std::string& endpoint);
 
-// Screen positions (normalized, origin top left) of the SMALL particles of a frame under `camera`.
+// Screen positions (normalized, origin top left) of the L0 particles of a frame under `camera`.
 std::vector<Eigen::Vector2d> smallOnScreen(const gsph::v1::Frame& frame, const sph::ScreenCamera& camera);
 // How many of `points` lie within `radius` (fraction of width, aspect-corrected as the gaze circle is) of (x, y).
 int countNear(const std::vector<Eigen::Vector2d>& points, const sph::ScreenCamera& camera, double x, double y,
               double radius);
-// Mean world x, z of the SMALL particles.
+// Mean world x, z of the L0 particles.
 Eigen::Vector2d smallMeanXZ(const gsph::v1::Frame& frame);
 
 }  // namespace net_test

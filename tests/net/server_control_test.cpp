@@ -9,7 +9,7 @@
 
 namespace {
 
-// tiny_pool's particle count soon after a start or a reset: 1,000 LARGE at the start. No gaze has
+// tiny_pool's particle count soon after a start or a reset: 1,000 L1 at the start. No gaze has
 // arrived, so the gaze method refines by the surface (the lost-gaze fallback): once a step has
 // run, surface particles have split. How many steps run before the reply depends on the load.
 void expectFreshTinyPool(const gsph::v1::ServerStatus& status) {
@@ -146,7 +146,8 @@ TEST(ServerControl, SetMethodSwapsInPlaceOrRestartsForRegular) {
   r = run.request(set);
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.status().method(), gsph::v1::METHOD_REGULAR);
-  EXPECT_EQ(r.status().small_count(), 2000u) << "regular restarts the scene with SMALL particles";
+  ASSERT_GE(r.status().level_counts_size(), 2);
+  EXPECT_EQ(r.status().level_counts(0), 2000u) << "regular restarts the scene with L0 particles";
   EXPECT_LT(r.status().step(), 10);
 
   for (int bad : {static_cast<int>(gsph::v1::METHOD_UNSPECIFIED), 99}) {

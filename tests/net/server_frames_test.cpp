@@ -22,7 +22,7 @@ using net_test::Publisher;
 // Runs `steps` steps of the regular method in the test thread the way the server does (one thread).
 sph::Simulation referenceRun(int steps) {
   omp_set_num_threads(1);
-  sph::Simulation sim(scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR), sph::SizeClass::Small);
+  sph::Simulation sim(scene::loadScene("tiny_pool", SPH_NET_TEST_SCENE_DIR), sph::Level{0});
   for (int i = 0; i < steps; ++i) sim.step();
   return sim;
 }
@@ -48,7 +48,8 @@ void expectFrameMatches(bool quantized) {
   const sph::Simulation ref = referenceRun(kSteps);
   const sph::ParticleSet& p = ref.particles();
   ASSERT_EQ(frame->particle_count(), p.size());
-  EXPECT_EQ(frame->small_count(), p.size());
+  ASSERT_GE(frame->level_counts_size(), 2);
+  EXPECT_EQ(frame->level_counts(0), p.size());
   EXPECT_EQ(frame->scene(), "tiny_pool");
   EXPECT_EQ(frame->method(), gsph::v1::METHOD_REGULAR);
   EXPECT_DOUBLE_EQ(frame->sim_time(), ref.time());
@@ -125,7 +126,7 @@ struct GazeRun {
     gaze = std::make_unique<Publisher>(ctx, server->endpoints().gaze);
   }
   // Sends the gaze point (again each wait, as a tracker streams) until a frame refined by it has
-  // SMALL particles near it on the screen of `camera` and hardly any near the opposite corner. (Before
+  // L0 particles near it on the screen of `camera` and hardly any near the opposite corner. (Before
   // the first sample the lost-gaze policy refines the surface everywhere; those merge back once
   // tracking, except a few stragglers that find no merge partner.)
   // Waits for a frame refined at (x, y) (and meeting `also`, when given): the step count at which
@@ -159,7 +160,8 @@ TEST(ServerFrames, GazeSampleMovesTheRefinedRegion) {
   const int near_a = net_test::countNear(small_a, camera, 0.25, 0.25, 0.2);
   EXPECT_GT(near_a, 10);
   EXPECT_LT(net_test::countNear(small_a, camera, 0.75, 0.75, 0.2) * 20, near_a);
-  EXPECT_GT(at_a->large_count(), 0u);
+  ASSERT_GE(at_a->level_counts_size(), 2);
+  EXPECT_GT(at_a->level_counts(1), 0u);
   // The frame echoes the sample it used, for latency measurement.
   EXPECT_EQ(at_a->gaze().source_id(), "test");
   EXPECT_GT(at_a->gaze().sample_sequence(), 0u);

@@ -43,8 +43,8 @@ TEST(SceneLoader, ShippedScenesLoadAndFill) {
     EXPECT_EQ(s.large_particles, 10000) << name;
     sph::ParticleSet small_set, large_set;
     const auto solver = sph::makeFluidSolver(s);
-    sph::fillWater(s, sph::SizeClass::Small, *solver, small_set);
-    sph::fillWater(s, sph::SizeClass::Large, *solver, large_set);
+    sph::fillWater(s, sph::Level{0}, *solver, small_set);
+    sph::fillWater(s, sph::Level{1}, *solver, large_set);
     EXPECT_EQ(small_set.size(), 20000u) << name;
     EXPECT_EQ(large_set.size(), 10000u) << name;
     // The same water mass either way.
@@ -58,7 +58,7 @@ TEST(SceneLoader, FillSpreadsTheTopLayerOverTheFootprint) {
   for (const char* preset : {"thesis", "pbf"}) {
     sph::Scene s = scene::loadScene("dambreak");
     ASSERT_TRUE(sph::presetByName(preset, s.params));
-    for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
+    for (const sph::Level c : {sph::Level{0}, sph::Level{1}}) {
       sph::ParticleSet p;
       sph::fillWater(s, c, *sph::makeFluidSolver(s), p);
       float top = 0.0f;
@@ -178,10 +178,10 @@ TEST(SceneLoader, ClassMassesOtherThanOneToTwoAreRejected) {
   EXPECT_DOUBLE_EQ(s.params.mass_small, 0.005);
   const std::string e = errorOf(withKey(R"("params": {"mass_small": 0.01, "mass_large": 0.03})"));
   EXPECT_NE(e.find("'mass_large' must be twice 'mass_small'"), std::string::npos) << e;
-  // Twice the mass over half the kernel particles: the same support for both classes.
+  // Twice the mass over half the kernel particles: the same support for L0 and L1.
   const std::string same =
       errorOf(withKey(R"("params": {"kernel_particles_small": 40, "kernel_particles_large": 20})"));
-  EXPECT_NE(same.find("give both classes one support"), std::string::npos) << same;
+  EXPECT_NE(same.find("give two levels one support"), std::string::npos) << same;
 }
 
 TEST(SceneLoader, WaterOutsideTheBoxIsRejected) {
@@ -219,7 +219,7 @@ TEST(SceneLoader, WaterRegionTooSmallForTheParticlesFailsToFill) {
   const sph::Scene s = scene::parseScene(
       R"({"box": {"min": [0,0,0], "max": [1,1,1]}, "water": {"min": [0,0,0], "max": [0.1,0.1,0.1]}})", "small.json");
   sph::ParticleSet p;
-  EXPECT_THROW(sph::fillWater(s, sph::SizeClass::Small, *sph::makeFluidSolver(s), p), std::invalid_argument);
+  EXPECT_THROW(sph::fillWater(s, sph::Level{0}, *sph::makeFluidSolver(s), p), std::invalid_argument);
 }
 
 TEST(SceneLoader, MethodAdaptiveSettingsAndGazeRecordingAreRead) {

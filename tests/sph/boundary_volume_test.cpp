@@ -55,7 +55,7 @@ sph::Scene boxScene(const std::string& preset) {
 TEST(BoundaryVolume, RestingLatticeSitsAtRestDensityAtFacesEdgesAndCorners) {
   const sph::Scene scene = boxScene("pbf");
   const sph::IncompressibleSetup setup = sph::makeIncompressibleSetup(scene);
-  for (int c = 0; c < sph::kSizeClassCount; ++c) {
+  for (int c = 0; c < scene.params.levels; ++c) {
     // Gradient scale: |grad rho| / rho0 of a particle that lost half its neighbours.
     const double scale = 1.0 / setup.kernels[static_cast<std::size_t>(c)].h;
     for (const auto& [i, j, k] : std::vector<std::array<int, 3>>{{10, 10, 10},
@@ -90,7 +90,7 @@ TEST(BoundaryVolume, GradientIsTheDerivativeOfTheVolume) {
   const sph::Scene scene = boxScene("pbf");
   const sph::IncompressibleSetup setup = sph::makeIncompressibleSetup(scene);
   const sph::BoxState box = scene.boundary.stateAt(0.0);
-  for (int c = 0; c < sph::kSizeClassCount; ++c) {
+  for (int c = 0; c < scene.params.levels; ++c) {
     const float s = setup.spacing[static_cast<std::size_t>(c)];
     for (const sph::Vec3& x : {sph::Vec3(0.5f, 0.3f * s, 0.5f), sph::Vec3(0.3f * s, 0.3f * s, 0.5f),
                                sph::Vec3(0.35f * s, 0.4f * s, 0.3f * s), sph::Vec3(0.8f * s, 1.3f * s, 0.5f),

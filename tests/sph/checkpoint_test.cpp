@@ -23,9 +23,10 @@ sph::Scene tank(const std::string& preset) {
 }
 
 std::unique_ptr<sph::Simulation> makeSim(const sph::Scene& scene, sph::Method method) {
-  auto sim = std::make_unique<sph::Simulation>(scene, sph::startClass(method), 4000);
+  auto sim = std::make_unique<sph::Simulation>(scene, sph::startLevel(method, scene.params.levels), 4000);
   if (method != sph::Method::Regular) {
-    sim->setAdaptiveStep(sph::makeAdaptiveController(method, sph::AdaptiveConfig{}, sph::cameraFromSpec(scene.camera)));
+    sim->setAdaptiveStep(sph::makeAdaptiveController(method, scene.params.levels, sph::AdaptiveConfig{},
+                                                     sph::cameraFromSpec(scene.camera)));
   }
   return sim;
 }
@@ -139,7 +140,7 @@ TEST_F(CheckpointRefusal, SceneOfOtherParticleMasses) {
   heavier.params.mass_large *= 2.0;
   heavier.large_particles /= 2;
   auto other = makeSim(heavier, sph::Method::Regular);
-  expectRefused(*other, "regular", "another mass or support than its class has here");
+  expectRefused(*other, "regular", "another mass or support than its level has here");
 }
 
 TEST_F(CheckpointRefusal, TruncatedCorruptedOrForeignFile) {

@@ -26,13 +26,13 @@ struct Stack {
 };
 
 void makeStack(Stack& s) {
-  const auto classes = s.params.classes();
+  const auto classes = s.params.levelProps();
   const sph::Vec3 centre(0.1f, 0.1f, 0.1f);
   for (int k = 0; k < 24; ++k) {
-    const sph::SizeClass c = k < 12 ? sph::SizeClass::Small : sph::SizeClass::Large;
-    s.particles.add(centre, sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+    const sph::Level c = k < 12 ? sph::Level{0} : sph::Level{1};
+    s.particles.add(centre, sph::Vec3::Zero(), c, classes[sph::levelIndex(c)]);
   }
-  s.particles.add(centre + sph::Vec3(0.01f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::SizeClass::Small, classes[0]);
+  s.particles.add(centre + sph::Vec3(0.01f, 0.0f, 0.0f), sph::Vec3::Zero(), sph::Level{0}, classes[0]);
   sph::Aabb bounds;
   bounds.min = Eigen::Vector3d::Zero();
   bounds.max = Eigen::Vector3d::Constant(0.2);
@@ -75,10 +75,10 @@ TEST(CoincidentPairs, PressurePushesThemApartAndConservesMomentum) {
 TEST(CoincidentPairs, PileInABoxCornerComesApart) {
   const sph::Scene scene = sph_test::boxScene("coincident_pairs_test", "thesis", Eigen::Vector3d::Constant(0.5),
                                               {0.2, 0.0, 0.2}, {0.4, 0.1, 0.4}, 140);
-  sph::Simulation sim(scene, sph::SizeClass::Large);
+  sph::Simulation sim(scene, sph::Level{1});
   sph::ParticleSet& p = sim.particles();
   const float r = p.radius[0];
-  // 20 particles on the point the box clamps a LARGE particle in the (min, min, min) corner to.
+  // 20 particles on the point the box clamps an L1 particle in the (min, min, min) corner to.
   for (std::size_t k = 0; k < 20; ++k) {
     p.position[k] = sph::Vec3::Constant(r);
     p.velocity[k] = sph::Vec3::Zero();

@@ -165,7 +165,7 @@ TEST(CollideBox, NoContactLeavesParticleUnchanged) {
 class IntegrateAndCollide : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto classes = params_.classes();
+    const auto classes = params_.levelProps();
     box_ = unitBox();
     box_.min_velocity = Vec3(0.2f, 0.0f, -0.1f);
     box_.max_velocity = Vec3(-0.3f, 0.0f, 0.05f);
@@ -173,9 +173,9 @@ class IntegrateAndCollide : public ::testing::Test {
     std::uniform_real_distribution<float> pos(-0.05f, 1.05f);
     std::uniform_real_distribution<float> speed(-8.0f, 8.0f);
     while (particles_.size() < particles_.capacity()) {
-      const sph::SizeClass c = particles_.size() % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
+      const sph::Level c = particles_.size() % 3 == 0 ? sph::Level{1} : sph::Level{0};
       const std::uint32_t k = particles_.add(Vec3(pos(rng), pos(rng), pos(rng)),
-                                             Vec3(speed(rng), speed(rng), speed(rng)), c, classes[sph::classIndex(c)]);
+                                             Vec3(speed(rng), speed(rng), speed(rng)), c, classes[sph::levelIndex(c)]);
       particles_.acceleration[k] = Vec3(speed(rng), speed(rng), speed(rng)) * 100.0f;
     }
     // Two particles on the sphere's centre and one on a cylinder's axis (after this step's move).

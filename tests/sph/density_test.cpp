@@ -13,10 +13,10 @@
 namespace {
 
 // Relative deviation (rho - rho0) / rho0 of the centre particle of an n^3 lattice block.
-double centreDensityDeviation(sph::SizeClass c, int n) {
+double centreDensityDeviation(sph::Level c, int n) {
   const sph::SimParams params = sph::thesisPreset();
-  const auto classes = params.classes();
-  const sph::SizeClassProps props = classes[sph::classIndex(c)];
+  const auto classes = params.levelProps();
+  const sph::LevelProps props = classes[sph::levelIndex(c)];
   const double spacing = std::cbrt(props.mass / params.rest_density);
 
   sph::ParticleSet particles(static_cast<std::size_t>(n) * n * n);
@@ -48,27 +48,27 @@ double centreDensityDeviation(sph::SizeClass c, int n) {
 }
 
 TEST(Density, SmallLatticeCentreNearRestDensity) {
-  const double dev = centreDensityDeviation(sph::SizeClass::Small, 13);
+  const double dev = centreDensityDeviation(sph::Level{0}, 13);
   EXPECT_LT(std::abs(dev), 0.05);
   EXPECT_NEAR(dev, 0.009, 0.01);  // about +0.9 %
 }
 
 TEST(Density, LargeLatticeCentreNearRestDensity) {
-  const double dev = centreDensityDeviation(sph::SizeClass::Large, 13);
+  const double dev = centreDensityDeviation(sph::Level{1}, 13);
   EXPECT_LT(std::abs(dev), 0.05);
   EXPECT_NEAR(dev, -0.037, 0.01);  // about -3.7 %
 }
 
-// A SMALL and a LARGE particle closer than both supports: each sees the other through the average
+// An L0 and an L1 particle closer than both supports: each sees the other through the average
 // of the two kernels, eq. (3.35), and itself through its own kernel.
 TEST(Density, MixedPairUsesAveragedKernel) {
   const sph::SimParams params = sph::thesisPreset();
-  const auto classes = params.classes();
+  const auto classes = params.levelProps();
   const sph::KernelTable kernels = sph::makeKernelTable(params);
   sph::ParticleSet particles(2);
   const float d = 0.5f * static_cast<float>(std::min(classes[0].support, classes[1].support));
-  particles.add(sph::Vec3(0.1f, 0.1f, 0.1f), sph::Vec3::Zero(), sph::SizeClass::Small, classes[0]);
-  particles.add(sph::Vec3(0.1f + d, 0.1f, 0.1f), sph::Vec3::Zero(), sph::SizeClass::Large, classes[1]);
+  particles.add(sph::Vec3(0.1f, 0.1f, 0.1f), sph::Vec3::Zero(), sph::Level{0}, classes[0]);
+  particles.add(sph::Vec3(0.1f + d, 0.1f, 0.1f), sph::Vec3::Zero(), sph::Level{1}, classes[1]);
   sph::Aabb bounds;
   bounds.max = Eigen::Vector3d::Constant(0.3);
   sph::NeighborGrid grid;

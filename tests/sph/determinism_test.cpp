@@ -26,7 +26,7 @@ RunResult runWithThreads(int threads, int steps) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
   EXPECT_EQ(omp_get_max_threads(), threads);
-  sph::Simulation sim(smallScene(), sph::SizeClass::Small);
+  sph::Simulation sim(smallScene(), sph::Level{0});
   for (int s = 0; s < steps; ++s) sim.step();
   omp_set_num_threads(previous);
   const sph::ParticleSet& p = sim.particles();
@@ -41,7 +41,7 @@ TEST(Simulation, ResultIndependentOfThreadCount) {
   constexpr int kSteps = 60;
   const RunResult one = runWithThreads(1, kSteps);
   const RunResult two = runWithThreads(2, kSteps);
-  ASSERT_EQ(one.id.size(), 2000u);  // 1000 LARGE worth of mass as SMALL particles
+  ASSERT_EQ(one.id.size(), 2000u);  // 1000 L1 worth of mass as L0 particles
   ASSERT_EQ(one.id, two.id);
   std::size_t differing = 0;
   for (std::size_t i = 0; i < one.position.size(); ++i) {
@@ -57,7 +57,7 @@ TEST(Simulation, ResultIndependentOfThreadCount) {
 
 TEST(Simulation, ParticlesStayFiniteAndInsideBox) {
   const sph::Scene scene = smallScene();
-  sph::Simulation sim(scene, sph::SizeClass::Small);
+  sph::Simulation sim(scene, sph::Level{0});
   const sph::Vec3 start = sim.particles().position[0];
   for (int s = 0; s < 60; ++s) sim.step();
   EXPECT_EQ(sim.stepCount(), 60);

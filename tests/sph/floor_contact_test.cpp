@@ -19,10 +19,10 @@ constexpr float kSpacing = 0.02f;
 // A 1 m box; the floor's guard at half a spacing, the sides' at 0.3 spacings (dfsph's).
 struct FloorBox {
   sph::BoxState box;
-  std::array<sph::WallReach, sph::kSizeClassCount> reach{};
-  std::array<float, sph::kSizeClassCount> spacing{};
+  std::array<sph::WallReach, sph::kMaxLevels> reach{};
+  std::array<float, sph::kMaxLevels> spacing{};
   sph::ParticleSet particles{16};
-  sph::SizeClassProps props = sph::SimParams{}.classes()[0];
+  sph::LevelProps props = sph::SimParams{}.levelProps()[0];
 
   FloorBox() {
     box.min = Eigen::Vector3f::Zero();
@@ -30,7 +30,7 @@ struct FloorBox {
     reach.fill(sph::WallReach(0.5f * kSpacing, 0.3f * kSpacing));
     spacing.fill(kSpacing);
   }
-  std::size_t add(const Vec3& x, const Vec3& u) { return particles.add(x, u, sph::SizeClass::Small, props); }
+  std::size_t add(const Vec3& x, const Vec3& u) { return particles.add(x, u, sph::Level{0}, props); }
 };
 
 TEST(FloorContact, HoldsWhatReachesTheFloorsGuardWithinTheStep) {

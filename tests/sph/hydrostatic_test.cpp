@@ -29,7 +29,7 @@ sph::Scene tank(const std::string& preset, int nx, int ny) {
   scene.boundary.box.max = Eigen::Vector3d(width, (ny + 4) * s, width);
   scene.water.min = Eigen::Vector3d::Zero();
   scene.water.max = Eigen::Vector3d(width, ny * s + 1e-6, width);
-  scene.large_particles = nx * nx * ny / 2;  // the regular method's SMALL particles: nx^2 ny
+  scene.large_particles = nx * nx * ny / 2;  // the regular method's L0 particles: nx^2 ny
   return scene;
 }
 
@@ -125,7 +125,7 @@ double rmsSpeed(const sph::ParticleSet& p) {
 void expectRest(const std::string& preset, int nx) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(1);
-  sph::Simulation sim(tank(preset, nx, 14), sph::SizeClass::Small);
+  sph::Simulation sim(tank(preset, nx, 14), sph::Level{0});
   ASSERT_EQ(sim.particles().size(), static_cast<std::size_t>(nx * nx * 14));
   for (int f = 0; f < 800 && (f < 200 || rmsSpeed(sim.particles()) >= 3e-3); ++f) sim.step();
   std::printf("%s: settled at t = %.2f s\n", preset.c_str(), sim.time());
@@ -192,7 +192,7 @@ TEST(Hydrostatic, PbfIteratesDeepWaterToItsTolerance) {
     sph::Scene scene = tank("pbf", 4, 40);
     EXPECT_GT(scene.params.pbf_density_tolerance, 0.0);  // the preset iterates to one
     scene.params.pbf_density_tolerance = fixed == 1 ? 0.0 : 0.005;
-    sph::Simulation sim(scene, sph::SizeClass::Small);
+    sph::Simulation sim(scene, sph::Level{0});
     ASSERT_EQ(sim.particles().size(), 640u);
     for (int f = 0; f < 50; ++f) sim.step();
     compression[fixed] = meanCompression(sim);
@@ -233,7 +233,7 @@ TEST(Hydrostatic, DfsphConjugateGradientsReachTheToleranceInFewerIterations) {
     sph::Scene scene = tank("dfsph", 8, 24);
     EXPECT_TRUE(scene.params.dfsph_conjugate_gradients);  // the preset's
     scene.params.dfsph_conjugate_gradients = run != 1;
-    sph::Simulation sim(scene, sph::SizeClass::Small);
+    sph::Simulation sim(scene, sph::Level{0});
     ASSERT_EQ(sim.particles().size(), 1536u);
     for (int f = 0; f < 100; ++f) sim.step();
     for (int f = 0; f < 50; ++f) {
@@ -264,7 +264,7 @@ struct State {
 State runWithThreads(const std::string& preset, int threads, int steps) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
-  sph::Simulation sim(tank(preset, 6, 8), sph::SizeClass::Small);
+  sph::Simulation sim(tank(preset, 6, 8), sph::Level{0});
   // Stir the settled water (a shear and a swirl), so that the steps move it.
   sph::ParticleSet& p = sim.particles();
   for (std::size_t i = 0; i < p.size(); ++i) {

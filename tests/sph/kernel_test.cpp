@@ -64,22 +64,22 @@ Eigen::Vector3d centralGradient(F f, const Eigen::Vector3d& x, double eps) {
 template <typename F>
 void forEachClass(F check) {
   const sph::SimParams params = sph::thesisPreset();
-  for (sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
-    SCOPED_TRACE(sph::sizeClassName(c));
-    const sph::SizeClassProps props = params.classes()[sph::classIndex(c)];
+  for (sph::Level c : {sph::Level{0}, sph::Level{1}}) {
+    SCOPED_TRACE(sph::levelName(c));
+    const sph::LevelProps props = params.levelProps()[sph::levelIndex(c)];
     check(props, KernelConstants::forSupport(props.support));
   }
 }
 
 TEST(Kernel, Poly6SumsToOneOnRestLattice) {
-  forEachClass([](const sph::SizeClassProps& props, const KernelConstants& k) {
+  forEachClass([](const sph::LevelProps& props, const KernelConstants& k) {
     const double spacing = std::cbrt(props.mass / sph::thesisPreset().rest_density);
     EXPECT_NEAR(latticeSum(k, spacing), 1.0, 0.05);
   });
 }
 
 TEST(Kernel, Poly6GradientMatchesFiniteDifference) {
-  forEachClass([](const sph::SizeClassProps&, const KernelConstants& k) {
+  forEachClass([](const sph::LevelProps&, const KernelConstants& k) {
     const double h = k.h;
     const double scale = 945.0 / (32.0 * std::numbers::pi * std::pow(h, 9.0)) * std::pow(h, 5.0);
     for (const auto& x : samplePoints(h)) {
@@ -93,7 +93,7 @@ TEST(Kernel, Poly6GradientMatchesFiniteDifference) {
 }
 
 TEST(Kernel, SpikyGradientMatchesFiniteDifference) {
-  forEachClass([](const sph::SizeClassProps&, const KernelConstants& k) {
+  forEachClass([](const sph::LevelProps&, const KernelConstants& k) {
     const double h = k.h;
     const double scale = 45.0 / (std::numbers::pi * std::pow(h, 4.0));
     for (const auto& x : samplePoints(h)) {
@@ -108,7 +108,7 @@ TEST(Kernel, SpikyGradientMatchesFiniteDifference) {
 }
 
 TEST(Kernel, Poly6LaplacianMatchesFiniteDifference) {
-  forEachClass([](const sph::SizeClassProps&, const KernelConstants& k) {
+  forEachClass([](const sph::LevelProps&, const KernelConstants& k) {
     const double h = k.h;
     const double scale = 945.0 / (32.0 * std::numbers::pi * std::pow(h, 9.0)) * std::pow(h, 4.0);
     const double eps = 1e-2 * h;
@@ -126,7 +126,7 @@ TEST(Kernel, Poly6LaplacianMatchesFiniteDifference) {
 }
 
 TEST(Kernel, ViscosityLaplacianMatchesFormula) {
-  forEachClass([](const sph::SizeClassProps&, const KernelConstants& k) {
+  forEachClass([](const sph::LevelProps&, const KernelConstants& k) {
     const double h = k.h;
     const double c = 45.0 / (std::numbers::pi * std::pow(h, 6.0));
     for (double f : {0.0, 0.2, 0.5, 0.9, 1.0}) {

@@ -24,16 +24,16 @@ void makeCloud(Cloud& cloud) {
   cloud.params = sph::thesisPreset();
   cloud.params.surface_tension_enabled = false;
   cloud.params.gravity = 0.0;
-  const auto classes = cloud.params.classes();
+  const auto classes = cloud.params.levelProps();
   std::mt19937 rng(12345);
   std::uniform_real_distribution<float> pos(0.0f, 0.2f);
   std::uniform_real_distribution<float> vel(-0.05f, 0.05f);
   std::bernoulli_distribution large(0.5);
   for (int i = 0; i < 400; ++i) {
-    const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
+    const sph::Level c = large(rng) ? sph::Level{1} : sph::Level{0};
     const sph::Vec3 x(pos(rng), pos(rng), pos(rng));
     const sph::Vec3 u(vel(rng), vel(rng), vel(rng));
-    cloud.particles.add(x, u, c, classes[sph::classIndex(c)]);
+    cloud.particles.add(x, u, c, classes[sph::levelIndex(c)]);
   }
   const double max_support = std::max(classes[0].support, classes[1].support);
   sph::Aabb bounds;
@@ -46,8 +46,8 @@ void makeCloud(Cloud& cloud) {
 TEST(Momentum, InternalForcesSumToZero) {
   Cloud cloud;
   makeCloud(cloud);
-  ASSERT_GT(cloud.particles.countOf(sph::SizeClass::Small), 100u);
-  ASSERT_GT(cloud.particles.countOf(sph::SizeClass::Large), 100u);
+  ASSERT_GT(cloud.particles.countOf(sph::Level{0}), 100u);
+  ASSERT_GT(cloud.particles.countOf(sph::Level{1}), 100u);
   ASSERT_GT(cloud.grid.meanNeighbors(), 2.0);  // the forces are not trivially zero
 
   const sph::KernelTable kernels = sph::makeKernelTable(cloud.params);

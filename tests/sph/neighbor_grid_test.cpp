@@ -19,14 +19,14 @@ namespace {
 // `count` particles of both classes (LARGE with probability `large_share`) at random in a cube of
 // side `extent`, at rest.
 sph::ParticleSet randomCloud(std::size_t count, float extent, double large_share, unsigned seed) {
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   sph::ParticleSet particles(count);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> pos(0.0f, extent);
   std::bernoulli_distribution large(large_share);
   while (particles.size() < particles.capacity()) {
-    const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
-    particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+    const sph::Level c = large(rng) ? sph::Level{1} : sph::Level{0};
+    particles.add(sph::Vec3(pos(rng), pos(rng), pos(rng)), sph::Vec3::Zero(), c, classes[sph::levelIndex(c)]);
   }
   return particles;
 }
@@ -40,7 +40,7 @@ sph::ParticleSet scatteredCloud() { return randomCloud(400, 0.2f, 0.5, 12345); }
 
 // A grid over the cloud's cube, cells of the largest support radius.
 sph::NeighborGrid cloudGrid(std::size_t capacity) {
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   sph::Aabb bounds;
   bounds.min = Eigen::Vector3d::Zero();
   bounds.max = Eigen::Vector3d::Constant(0.12);
@@ -158,7 +158,7 @@ TEST(NeighborGrid, ListsAreExactForParticlesInCellOrder) {
 // point on a far wall computes the index of the spare border cell, which the grid keeps empty
 // (candidateRows reads the cells on both sides of a particle's cell without clamping).
 TEST(NeighborGrid, ListsAreExactForParticlesOnTheContainerWalls) {
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   const float cell = static_cast<float>(std::max(classes[0].support, classes[1].support));
   sph::Aabb bounds;
   bounds.min = Eigen::Vector3d::Zero();
@@ -174,10 +174,10 @@ TEST(NeighborGrid, ListsAreExactForParticlesOnTheContainerWalls) {
   for (int z = 0; z <= kSteps; ++z) {
     for (int y = 0; y <= kSteps; ++y) {
       for (int x = 0; x <= kSteps; ++x) {
-        const sph::SizeClass c = (x + y + z) % 3 == 0 ? sph::SizeClass::Large : sph::SizeClass::Small;
+        const sph::Level c = (x + y + z) % 3 == 0 ? sph::Level{1} : sph::Level{0};
         const sph::Vec3 at = sph::Vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)) *
                              static_cast<float>(bounds.max.x() / kSteps);
-        p.add(at, sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+        p.add(at, sph::Vec3::Zero(), c, classes[sph::levelIndex(c)]);
       }
     }
   }
@@ -205,7 +205,7 @@ TEST(NeighborGrid, NeighbourRelationIsSymmetric) {
   const sph::ParticleSet p = scatteredCloud();
   sph::Aabb bounds;
   bounds.max = Eigen::Vector3d::Constant(0.2);
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   sph::NeighborGrid grid;
   grid.configure(bounds, static_cast<float>(std::max(classes[0].support, classes[1].support)), p.size());
   grid.build(p);
@@ -237,7 +237,7 @@ TEST(NeighborGrid, NeighbourRelationIsSymmetric) {
 // the other class (hasOtherSupport): never wrong where a listed neighbour has another support, and
 // false for particles whose candidates are all of their own class, for any thread count.
 TEST(NeighborGrid, ParticlesAmongTheirOwnClassHaveNoOtherSupport) {
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   ASSERT_NE(classes[0].support, classes[1].support);
   // A bar 0.6 m long: SMALL particles in its first third, LARGE ones beyond.
   sph::ParticleSet p(3000);
@@ -245,8 +245,8 @@ TEST(NeighborGrid, ParticlesAmongTheirOwnClassHaveNoOtherSupport) {
   std::uniform_real_distribution<float> along(0.0f, 0.6f), across(0.0f, 0.1f);
   while (p.size() < p.capacity()) {
     const sph::Vec3 x(along(rng), across(rng), across(rng));
-    const sph::SizeClass c = x.x() < 0.2f ? sph::SizeClass::Small : sph::SizeClass::Large;
-    p.add(x, sph::Vec3::Zero(), c, classes[sph::classIndex(c)]);
+    const sph::Level c = x.x() < 0.2f ? sph::Level{0} : sph::Level{1};
+    p.add(x, sph::Vec3::Zero(), c, classes[sph::levelIndex(c)]);
   }
   sph::Aabb bounds;
   bounds.max = Eigen::Vector3d(0.6, 0.1, 0.1);

@@ -15,17 +15,17 @@
 
 namespace {
 
-using sph::SizeClass;
+using sph::Level;
 using sph::Vec3;
 
 // n particles, alternating classes, every attribute set to a value derived from the particle's id.
 sph::ParticleSet makeSet(std::size_t n, std::size_t capacity) {
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   sph::ParticleSet p(capacity);
   for (std::size_t i = 0; i < n; ++i) {
-    const SizeClass c = (i % 3 == 0) ? SizeClass::Large : SizeClass::Small;
+    const Level c = (i % 3 == 0) ? Level{1} : Level{0};
     const float f = static_cast<float>(i);
-    p.add(Vec3(f, 2.0f * f, 3.0f * f), Vec3(-f, 0.5f * f, 7.0f), c, classes[sph::classIndex(c)]);
+    p.add(Vec3(f, 2.0f * f, 3.0f * f), Vec3(-f, 0.5f * f, 7.0f), c, classes[sph::levelIndex(c)]);
     p.acceleration.back() = Vec3(f + 0.25f, f, -f);
     p.density.back() = 1000.0f + f;
     p.pressure.back() = 10.0f * f;
@@ -38,15 +38,15 @@ sph::ParticleSet makeSet(std::size_t n, std::size_t capacity) {
 
 // Every attribute of particle k matches the values makeSet gave the particle with id `id`.
 void expectParticleIs(const sph::ParticleSet& p, std::size_t k, std::uint32_t id) {
-  const auto classes = sph::thesisPreset().classes();
+  const auto classes = sph::thesisPreset().levelProps();
   const float f = static_cast<float>(id);
-  const SizeClass c = (id % 3 == 0) ? SizeClass::Large : SizeClass::Small;
+  const Level c = (id % 3 == 0) ? Level{1} : Level{0};
   SCOPED_TRACE(::testing::Message() << "index " << k << ", id " << id);
   EXPECT_EQ(p.id[k], id);
-  EXPECT_EQ(p.size_class[k], c);
-  EXPECT_EQ(p.mass[k], static_cast<float>(classes[sph::classIndex(c)].mass));
-  EXPECT_EQ(p.radius[k], static_cast<float>(classes[sph::classIndex(c)].radius));
-  EXPECT_EQ(p.support[k], static_cast<float>(classes[sph::classIndex(c)].support));
+  EXPECT_EQ(p.level[k], c);
+  EXPECT_EQ(p.mass[k], static_cast<float>(classes[sph::levelIndex(c)].mass));
+  EXPECT_EQ(p.radius[k], static_cast<float>(classes[sph::levelIndex(c)].radius));
+  EXPECT_EQ(p.support[k], static_cast<float>(classes[sph::levelIndex(c)].support));
   EXPECT_EQ(p.position[k], Vec3(f, 2.0f * f, 3.0f * f));
   EXPECT_EQ(p.velocity[k], Vec3(-f, 0.5f * f, 7.0f));
   EXPECT_EQ(p.acceleration[k], Vec3(f + 0.25f, f, -f));
@@ -85,23 +85,23 @@ TEST(ParticleSet, CompactKeepsFlaggedInOrder) {
   p.forEachAttribute([&](const auto& v) { EXPECT_EQ(v.size(), 4u); });
 
   // New particles after a compaction get fresh ids, never reused ones.
-  const auto classes = sph::thesisPreset().classes();
-  EXPECT_EQ(p.add(Vec3::Zero(), Vec3::Zero(), SizeClass::Small, classes[0]), 8u);
+  const auto classes = sph::thesisPreset().levelProps();
+  EXPECT_EQ(p.add(Vec3::Zero(), Vec3::Zero(), Level{0}, classes[0]), 8u);
 }
 
 TEST(ParticleSet, AddPastCapacityThrows) {
   sph::ParticleSet p = makeSet(5, 5);
-  const auto classes = sph::thesisPreset().classes();
-  EXPECT_THROW(p.add(Vec3::Zero(), Vec3::Zero(), SizeClass::Small, classes[0]), std::length_error);
+  const auto classes = sph::thesisPreset().levelProps();
+  EXPECT_THROW(p.add(Vec3::Zero(), Vec3::Zero(), Level{0}, classes[0]), std::length_error);
   EXPECT_EQ(p.size(), 5u);
   p.forEachAttribute([&](const auto& v) { EXPECT_EQ(v.size(), 5u); });
 }
 
 TEST(ParticleSet, TotalMassAndClassCounts) {
-  const sph::ParticleSet p = makeSet(10, 16);  // ids 0, 3, 6, 9 LARGE
-  const auto classes = sph::thesisPreset().classes();
-  EXPECT_EQ(p.countOf(SizeClass::Large), 4u);
-  EXPECT_EQ(p.countOf(SizeClass::Small), 6u);
+  const sph::ParticleSet p = makeSet(10, 16);  // ids 0, 3, 6, 9 L1
+  const auto classes = sph::thesisPreset().levelProps();
+  EXPECT_EQ(p.countOf(Level{1}), 4u);
+  EXPECT_EQ(p.countOf(Level{0}), 6u);
   const double expected = 4.0 * static_cast<float>(classes[1].mass) + 6.0 * static_cast<float>(classes[0].mass);
   EXPECT_DOUBLE_EQ(p.totalMass(), expected);
   EXPECT_NEAR(p.totalMass(), 4 * 0.02 + 6 * 0.01, 1e-8);
@@ -109,7 +109,7 @@ TEST(ParticleSet, TotalMassAndClassCounts) {
   sph::ParticleSet empty(4);
   EXPECT_TRUE(empty.empty());
   EXPECT_EQ(empty.totalMass(), 0.0);
-  EXPECT_EQ(empty.countOf(SizeClass::Small), 0u);
+  EXPECT_EQ(empty.countOf(Level{0}), 0u);
 }
 
 }  // namespace
@@ -164,15 +164,15 @@ TEST(ParticleAttributes, EveryAttributeIsDeclaredOnceWithAName) {
   EXPECT_EQ(count * sizeof(std::vector<float>), sizeof(sph::ParticleAttributes));
 }
 
-// The class-derived attributes are exactly the ones setClass sets.
-TEST(ParticleAttributes, ClassRulesAreTheAttributesSetClassSets) {
+// The class-derived attributes are exactly the ones setLevel sets.
+TEST(ParticleAttributes, LevelRulesAreTheAttributesSetLevelSets) {
   sph::ParticleSet p(4);
   std::set<std::string> split_class, merge_class;
   p.forEachAttributeSpec([&](auto&, const auto& spec) {
-    if (spec.split == sph::SplitRule::kClass) split_class.insert(spec.name);
-    if (spec.merge == sph::MergeRule::kClass) merge_class.insert(spec.name);
+    if (spec.split == sph::SplitRule::kLevel) split_class.insert(spec.name);
+    if (spec.merge == sph::MergeRule::kLevel) merge_class.insert(spec.name);
   });
-  const std::set<std::string> expected = {"size_class", "radius", "support"};
+  const std::set<std::string> expected = {"level", "radius", "support"};
   EXPECT_EQ(split_class, expected);
   EXPECT_EQ(merge_class, expected);
 }
@@ -180,15 +180,15 @@ TEST(ParticleAttributes, ClassRulesAreTheAttributesSetClassSets) {
 // Split and merge apply each attribute's rule: a parent whose every attribute holds a distinct
 // value, split, then its two children merged again.
 TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
-  const auto classes = sph::thesisPreset().classes();
-  const auto& small = classes[sph::classIndex(SizeClass::Small)];
-  const auto& large = classes[sph::classIndex(SizeClass::Large)];
-  sph::ParticleSet p = makeSet(1, 4);  // id 0: LARGE
+  const auto classes = sph::thesisPreset().levelProps();
+  const auto& small = classes[sph::levelIndex(Level{0})];
+  const auto& large = classes[sph::levelIndex(Level{1})];
+  sph::ParticleSet p = makeSet(1, 4);  // id 0: L1
   p.surface_distance[0] = 0.5f;
   p.surface_hop[0] = 0.25f;
   const sph::ParticleSet before = p;
   const std::size_t c = p.appendReset(1);
-  p.splitInto(0, c, SizeClass::Small, small);
+  p.splitInto(0, c, Level{0}, small);
 
   sph::ParticleSet& q = p;
   q.forEachAttributeSpec([&](auto& v, const auto& spec) {
@@ -220,13 +220,13 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
         EXPECT_EQ(v[0], parent[0]);
         EXPECT_NE(v[c], parent[0]);
         break;
-      case sph::SplitRule::kClass:
+      case sph::SplitRule::kLevel:
         break;  // below
     }
   });
   for (std::size_t k : {std::size_t{0}, c}) {
-    EXPECT_EQ(p.size_class[k], SizeClass::Small);
-    EXPECT_EQ(p.mass[k], static_cast<float>(small.mass));  // halving the LARGE mass is exact
+    EXPECT_EQ(p.level[k], Level{0});
+    EXPECT_EQ(p.mass[k], static_cast<float>(small.mass));  // halving the L1 mass is exact
     EXPECT_EQ(p.radius[k], static_cast<float>(small.radius));
     EXPECT_EQ(p.support[k], static_cast<float>(small.support));
   }
@@ -238,7 +238,7 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
   p.normal_length[c] = 99.0f;
   p.surface_distance[c] = 0.125f;
   const sph::ParticleSet children = p;
-  p.mergeInto(0, c, SizeClass::Large, large);
+  p.mergeInto(0, c, Level{1}, large);
   p.forEachAttributeSpec([&](auto& v, const auto& spec) {
     SCOPED_TRACE(spec.name);
     const auto& a = (children.*spec.member)[0];
@@ -276,11 +276,11 @@ TEST(ParticleAttributes, SplitAndMergeApplyEachRule) {
           EXPECT_EQ(v[0], 1);
         }
         break;
-      case sph::MergeRule::kClass:
+      case sph::MergeRule::kLevel:
         break;
     }
   });
-  EXPECT_EQ(p.size_class[0], SizeClass::Large);
+  EXPECT_EQ(p.level[0], Level{1});
   EXPECT_EQ(p.mass[0], static_cast<float>(large.mass));
   EXPECT_EQ(p.radius[0], static_cast<float>(large.radius));
   EXPECT_EQ(p.normal_length[0], 99.0f);

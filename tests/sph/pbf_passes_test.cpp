@@ -29,13 +29,13 @@ struct Block {
     EXPECT_TRUE(sph::presetByName("pbf", scene.params));
     scene.boundary.box.max = Eigen::Vector3d(0.6, 0.3, 0.3);
     setup = sph::makeIncompressibleSetup(scene);
-    const auto classes = scene.params.classes();
+    const auto classes = scene.params.levelProps();
     std::mt19937 rng(99);
     std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
-    for (const sph::SizeClass c : {sph::SizeClass::Small, sph::SizeClass::Large}) {
-      const std::size_t k = sph::classIndex(c);
+    for (const sph::Level c : {sph::Level{0}, sph::Level{1}}) {
+      const std::size_t k = sph::levelIndex(c);
       const float step = 0.9f * setup.spacing[k];
-      const float x0 = c == sph::SizeClass::Small ? 0.02f : 0.3f;
+      const float x0 = c == sph::Level{0} ? 0.02f : 0.3f;
       for (float x = x0; x < x0 + 0.28f; x += step) {
         for (float y = 0.02f; y < 0.2f; y += step) {
           for (float z = 0.02f; z < 0.28f; z += step) {

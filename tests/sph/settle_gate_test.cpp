@@ -33,7 +33,7 @@ TEST(SettleGate, GatedSceneIsTheWaterRegionInsideTheBox) {
 TEST(SettleGate, ADamBreakColumnStandsUntilItIsReleased) {
   for (const char* preset : {"pbf", "dfsph"}) {
     const sph::Scene scene = column(preset);
-    sph::Simulation sim(scene, sph::SizeClass::Small);
+    sph::Simulation sim(scene, sph::Level{0});
     EXPECT_LE(maxX(sim.particles()), 0.2f) << preset << ": the column spread while it settled";
     sim.step();
     EXPECT_GT(maxX(sim.particles()), 0.0f);
@@ -44,9 +44,9 @@ TEST(SettleGate, ADamBreakColumnStandsUntilItIsReleased) {
 // (what a frame of the start shows).
 TEST(SettleGate, TheThesisStartsOnItsLatticeWithItsDensityKnown) {
   const sph::Scene scene = column("thesis");
-  sph::Simulation sim(scene, sph::SizeClass::Small);
+  sph::Simulation sim(scene, sph::Level{0});
   sph::ParticleSet fresh;
-  sph::fillWater(scene, sph::SizeClass::Small, sim.solver(), fresh);
+  sph::fillWater(scene, sph::Level{0}, sim.solver(), fresh);
   ASSERT_EQ(fresh.size(), sim.particles().size());
   double sum = 0.0;
   for (std::size_t i = 0; i < fresh.size(); ++i) {

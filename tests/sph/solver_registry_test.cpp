@@ -46,7 +46,7 @@ TEST(SolverRegistry, ASolverRegisteredByNameRunsASimulation) {
   sph::registerFluidSolver(kName, [](const sph::Scene& s) { return std::make_unique<FreeFallSolver>(s); });
   ASSERT_TRUE(sph::isFluidSolverName(kName));
   const sph::Scene scene = airborneWater();
-  sph::Simulation sim(scene, sph::SizeClass::Small);
+  sph::Simulation sim(scene, sph::Level{0});
   ASSERT_EQ(sim.particles().size(), 100u);
   const double spacing = std::cbrt(scene.params.mass_small / scene.params.rest_density);
   float lowest = 1.0f;
@@ -72,7 +72,7 @@ TEST(SolverRegistry, AnUnknownSolverNameIsRefusedWithItsName) {
   sph::Scene scene = airborneWater();
   scene.params.solver = "no_such_solver";
   try {
-    sph::Simulation sim(scene, sph::SizeClass::Small);
+    sph::Simulation sim(scene, sph::Level{0});
     FAIL() << "a simulation started on an unknown solver";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("no_such_solver"), std::string::npos) << e.what();

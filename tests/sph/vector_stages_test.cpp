@@ -35,7 +35,7 @@ struct CloudShape {
 // A loose heap of both classes with random velocities and surface distances (some still
 // unreached), so every term of both stages, surface tension and mixed pairs included, is non-zero.
 void makeCloud(Cloud& cloud, const CloudShape& shape) {
-  const auto classes = cloud.params.classes();
+  const auto classes = cloud.params.levelProps();
   std::mt19937 rng(4242);
   std::uniform_real_distribution<float> pos(0.0f, 0.3f);
   std::uniform_real_distribution<float> vel(-0.5f, 0.5f);
@@ -43,11 +43,11 @@ void makeCloud(Cloud& cloud, const CloudShape& shape) {
   std::bernoulli_distribution large(0.5);
   std::bernoulli_distribution unreached(0.3);
   while (cloud.particles.size() < cloud.particles.capacity()) {
-    const sph::SizeClass c = large(rng) ? sph::SizeClass::Large : sph::SizeClass::Small;
+    const sph::Level c = large(rng) ? sph::Level{1} : sph::Level{0};
     const float e = shape.extent / 0.3f;
     const std::uint32_t k =
         cloud.particles.add(sph::Vec3(e * pos(rng), e * pos(rng) * 0.5f, e * pos(rng)),
-                            sph::Vec3(vel(rng), vel(rng), vel(rng)), c, classes[sph::classIndex(c)]);
+                            sph::Vec3(vel(rng), vel(rng), vel(rng)), c, classes[sph::levelIndex(c)]);
     cloud.particles.surface_distance[k] = unreached(rng) ? std::numeric_limits<float>::infinity() : dist(rng);
   }
   for (int c = 0; c < shape.coincident; ++c) {
@@ -144,7 +144,7 @@ TEST(VectorStages, MatchTheScalarReferenceWithEqualClassMasses) {
   if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
   sph::SimParams params = sph::thesisPreset();
   params.mass_large = params.mass_small;
-  ASSERT_NE(params.classes()[0].support, params.classes()[1].support);
+  ASSERT_NE(params.levelProps()[0].support, params.levelProps()[1].support);
   expectVectorMatchesScalar(params);
 }
 

@@ -35,8 +35,8 @@ struct Vortex {
 
 TEST(VorticityConfinement, PushTurnsWithTheVortexAndScalesWithEpsilon) {
   const sph::SimParams params = sph::pbfPreset();
-  const auto classes = params.classes();
-  const sph::SizeClassProps small = classes[sph::classIndex(sph::SizeClass::Small)];
+  const auto classes = params.levelProps();
+  const sph::LevelProps small = classes[sph::levelIndex(sph::Level{0})];
   const double s = std::cbrt(small.mass / params.rest_density);
   constexpr int kAcross = 20, kHigh = 8;
   Vortex vortex;
@@ -53,8 +53,7 @@ TEST(VorticityConfinement, PushTurnsWithTheVortexAndScalesWithEpsilon) {
         const double r = radial.norm();
         // omega along +y: v = omega x r turns x into -z. The axis lies between lattice columns: r > 0.
         const Eigen::Vector3d tangent = Eigen::Vector3d::UnitY().cross(radial) / r;
-        const std::uint32_t k =
-            p.add(x.cast<float>(), (vortex.speed(r) * tangent).cast<float>(), sph::SizeClass::Small, small);
+        const std::uint32_t k = p.add(x.cast<float>(), (vortex.speed(r) * tangent).cast<float>(), sph::Level{0}, small);
         p.density[k] = static_cast<float>(params.rest_density);
       }
     }
@@ -67,7 +66,7 @@ TEST(VorticityConfinement, PushTurnsWithTheVortexAndScalesWithEpsilon) {
   grid.build(p);
 
   sph::VelocityConstants c;
-  c.kernels = sph::PairKernels::forClasses(classes);
+  c.kernels = sph::PairKernels::forClasses(classes, sph::kMaxLevels);
   c.dt = 0.0025f;
   c.xsph = 0.0f;  // velocity_next = velocity before the confinement: the push alone remains
   std::vector<sph::Vec3> next(p.size()), vorticity(p.size());

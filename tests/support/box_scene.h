@@ -1,5 +1,5 @@
 // The library tests' scene: a box from the origin to `box_max`, water in [water_min, water_max]
-// (filled from its floor up with `large_particles` LARGE particles' worth), the preset's parameters.
+// (filled from its floor up with `large_particles` L1 particles' worth), the preset's parameters.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 // The whole gaze path on loopback, with nothing stubbed: a Gazepoint Open Gaze API emulator (TCP,
 // records split across reads) -> gaze_bridge (GazepointSource, processing, PUB) -> sph_server
-// (in-process, gaze method) -> frames whose SMALL particles sit where the emulated eye looks.
+// (in-process, gaze method) -> frames whose L0 particles sit where the emulated eye looks.
 #include <gtest/gtest.h>
 
 #include <chrono>

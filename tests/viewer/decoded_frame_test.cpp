@@ -38,8 +38,7 @@ TEST(DecodedFrame, FloatPositionsAndClasses) {
   EXPECT_FLOAT_EQ(out.positions[1].x, -0.5f);
   EXPECT_FLOAT_EQ(out.positions[1].z, 0.75f);
   EXPECT_EQ(out.classes[0], viewer::kClassSmall);
-  EXPECT_EQ(out.small_count, 1u);
-  EXPECT_EQ(out.large_count, 2u);
+  EXPECT_EQ(out.level_counts, (std::vector<std::uint32_t>{1, 2}));
   EXPECT_EQ(out.sequence, 7u);
   EXPECT_TRUE(out.geometry.has_box);
   EXPECT_FLOAT_EQ(out.radius_large, 0.05f);
@@ -133,8 +132,6 @@ TEST(DecodedFrame, SizeLevelsTakeTheirRadiiFromLevelRadii) {
   EXPECT_EQ(out.classes, (std::vector<std::uint8_t>{0, 1, 2, 3, 3, 0}));
   EXPECT_EQ(out.level_radii, (std::vector<float>{0.01f, 0.0126f, 0.0159f, 0.02f}));
   EXPECT_EQ(out.level_counts, (std::vector<std::uint32_t>{2, 1, 1, 2}));
-  EXPECT_EQ(out.small_count, 2u);
-  EXPECT_EQ(out.large_count, 1u);
   EXPECT_TRUE(out.hasExtraLevels());
 }
 
@@ -156,7 +153,7 @@ TEST(DecodedFrame, RejectsALevelBeyondLevelRadii) {
   EXPECT_NE(error.find("size level 3 is beyond the 3 levels"), std::string::npos) << error;
   spec.level_radii.clear();  // a two-class frame: levels 2 and 3 are unknown
   EXPECT_FALSE(decodeFrame(makeFrame(spec, 1), out, error));
-  EXPECT_NE(error.find("size class 2 is neither SMALL (0) nor LARGE (1)"), std::string::npos) << error;
+  EXPECT_NE(error.find("size class 2 is neither L0 (0) nor L1 (1)"), std::string::npos) << error;
 }
 
 TEST(DecodedFrame, RejectsBadLevelRadii) {

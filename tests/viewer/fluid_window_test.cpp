@@ -1,5 +1,5 @@
 // Fluid mode under a real (virtual) X display, on frames the test publishes: a resting pool comes
-// out flat, LARGE and SMALL particles make one surface, thicker water is darker, spray the frame
+// out flat, L1 and L0 particles make one surface, thicker water is darker, spray the frame
 // marks is drawn apart from the surface, and the overlays stay.
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ namespace {
 constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 constexpr double kSmall = 0.02;     // particle radii, metres
-constexpr double kLarge = 0.0252;   // 2^(1/3) kSmall: a LARGE particle has twice the volume
+constexpr double kLarge = 0.0252;   // 2^(1/3) kSmall: an L1 particle has twice the volume
 constexpr double kPoolTop = -1.48;  // the pools' surface, 12 cm above the floor of the box
 constexpr float kBoxHalf = 1.6f;    // box [-1.6, 1.6]^3
 const Vec3d kUp{0.0, 1.0, 0.0};
@@ -121,7 +121,7 @@ TEST(FluidWindow, RestingPoolIsFlatInFluidModeAndBeadsInParticleMode) {
 TEST(FluidWindow, LargeAndSmallHalvesMeetWithoutASeam) {
   const std::string dir = scratchDir();
   FrameSpec spec = poolSpec();
-  // LARGE left of x = 0, SMALL right of it, both tops at the same height: the seam is the
+  // L1 left of x = 0, L0 right of it, both tops at the same height: the seam is the
   // picture's middle column.
   appendPool(spec.particles, -1.5, 0.0, -1.5, 1.5, kPoolTop, 3, kLarge, 1, /*from_x1=*/true);
   appendPool(spec.particles, 0.0, 1.5, -1.5, 1.5, kPoolTop, 4, kSmall, 0);
@@ -140,7 +140,7 @@ TEST(FluidWindow, LargeAndSmallHalvesMeetWithoutASeam) {
   const double right = meanHeight(*depth, kWidth / 2 + 2, kWidth / 2 + 8, &right_samples);
   ASSERT_GT(left_samples, 500);
   ASSERT_GT(right_samples, 500);
-  EXPECT_NEAR(left, right, 0.2 * kSmall) << "LARGE side " << left << " m, SMALL side " << right << " m";
+  EXPECT_NEAR(left, right, 0.2 * kSmall) << "L1 side " << left << " m, L0 side " << right << " m";
   // And that height is the pool's surface (the decoding and the camera agree).
   EXPECT_NEAR(left, kPoolTop, 2.0 * kLarge);
 }

@@ -29,14 +29,7 @@ gsph::v1::Frame makeFrame(const FrameSpec& spec, std::uint64_t sequence) {
   const auto n = static_cast<std::uint32_t>(spec.particles.size());
   f.set_particle_count(n);
   std::string classes;
-  std::uint32_t large = 0, small = 0;
-  for (const auto& p : spec.particles) {
-    classes.push_back(static_cast<char>(p.size_class));
-    large += p.size_class == 1;
-    small += p.size_class == 0;
-  }
-  f.set_large_count(large);
-  f.set_small_count(small);
+  for (const auto& p : spec.particles) classes.push_back(static_cast<char>(p.level));
   f.set_size_classes(classes);
   f.set_radius_small(spec.radius_small);
   f.set_radius_large(spec.radius_large);

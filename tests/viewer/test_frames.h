@@ -10,7 +10,7 @@ namespace viewer_test {
 
 struct TestParticle {
   float x, y, z;
-  std::uint8_t size_class;  // size level: 0 SMALL, 1 LARGE, 2.. coarser (needs level_radii)
+  std::uint8_t level;  // size level: 0 the finest, 2.. need level_radii
 };
 
 struct FrameSpec {

@@ -159,7 +159,7 @@ TEST(ViewerControl, SpaceKeySendsPauseAndStatusIsPolled) {
 
 TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   const std::string dir = scratchDir();
-  // Server A: a LARGE (red) particle, carrying the camera the viewer should adopt; it sends 5
+  // Server A: an L1 (red) particle, carrying the camera the viewer should adopt; it sends 5
   // frames in all, so it cannot supply the 40 the snapshot waits for however fast it runs.
   FrameSpec red = oneParticle(1);
   auto frame_a = makeFrame(red, 100);
@@ -177,7 +177,7 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   ASSERT_TRUE(server_a->waitForPose([&](const auto& p) { return matrixNear(p.view(), view, 1e-4); }, kWait))
       << readFile(dir + "/viewer.log");
   server_a.reset();
-  // Server B on the same frames endpoint, counting from 1 again, SMALL (blue) particle.
+  // Server B on the same frames endpoint, counting from 1 again, L0 (blue) particle.
   // (Pose, gaze and control of B are on new ports; only the frame stream is tested here.)
   TestServer server_b(makeFrame(oneParticle(0), 1), endpoint, 1);
   const auto deadline = std::chrono::steady_clock::now() + kWait;

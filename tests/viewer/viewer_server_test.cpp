@@ -1,5 +1,5 @@
 // Round trips with the real sph_server: the viewer's pose becomes the server's projection, the
-// viewer's mouse gaze moves the refined (SMALL) region, and fluid mode draws the server's water.
+// viewer's mouse gaze moves the refined (L0) region, and fluid mode draws the server's water.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -132,7 +132,7 @@ bool viewNear(const gsph::v1::CameraPose& pose, const Mat4d& expected, double to
   return true;
 }
 
-// Screen position (normalized, origin top left) of every SMALL particle, through the frame's camera.
+// Screen position (normalized, origin top left) of every L0 particle, through the frame's camera.
 std::vector<std::array<double, 2>> smallOnScreen(const gsph::v1::Frame& frame) {
   viewer::DecodedFrame decoded;
   std::string error;
@@ -148,7 +148,7 @@ std::vector<std::array<double, 2>> smallOnScreen(const gsph::v1::Frame& frame) {
   return out;
 }
 
-// Most SMALL particles lie within `reach` (fraction of width) of the gaze point (x, y).
+// Most L0 particles lie within `reach` (fraction of width) of the gaze point (x, y).
 bool refinedAround(const gsph::v1::Frame& frame, double x, double y, double reach) {
   if (frame.gaze().mode() != gsph::v1::GAZE_MODE_TRACKING) return false;
   if (std::abs(frame.gaze().x() - x) > 0.02 || std::abs(frame.gaze().y() - y) > 0.02) return false;

@@ -22,7 +22,7 @@ constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 constexpr auto kWait = 20s;
 
-// Two SMALL and two LARGE particles well apart, in front of a camera at (0, 0, 2.5).
+// Two L0 and two L1 particles well apart, in front of a camera at (0, 0, 2.5).
 FrameSpec fourParticles() {
   FrameSpec spec;
   spec.particles = {{-0.5f, 0.3f, 0.0f, 0}, {0.5f, -0.3f, 0.2f, 0}, {0.5f, 0.3f, -0.2f, 1}, {-0.5f, -0.3f, 0.0f, 1}};
@@ -58,7 +58,7 @@ viewer::RgbaImage loadPng(const std::string& path) {
   return image;
 }
 
-// What a pixel shows: background, a SMALL (blue) or LARGE (red) particle, or an outline (grey).
+// What a pixel shows: background, an L0 (blue) or L1 (red) particle, or an outline (grey).
 // Shades along a sphere's rim change with sub-pixel shifts, so pictures are compared by this.
 int pixelKind(Colour c) {
   const int brightest = std::max({c.r, c.g, c.b});
@@ -120,10 +120,10 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
   for (const auto& p : spec.particles) {
     const auto px = projectToPixel(pose.view().data(), pose.projection().data(), {p.x, p.y, p.z}, kWidth, kHeight);
     const Colour c = pixel(image, static_cast<int>(px[0]), static_cast<int>(px[1]));
-    if (p.size_class == 0) {
-      EXPECT_TRUE(isBlue(c)) << "SMALL at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
+    if (p.level == 0) {
+      EXPECT_TRUE(isBlue(c)) << "L0 at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
     } else {
-      EXPECT_TRUE(isRed(c)) << "LARGE at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
+      EXPECT_TRUE(isRed(c)) << "L1 at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
     }
   }
   // Between the particles there is only background, so a picture that is all one colour fails.
@@ -138,8 +138,8 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
   EXPECT_FALSE(anyNear(image, kWidth / 2.0, kHeight / 2.0, 3, yellow));
 }
 
-// One particle per size level, each level its own radius (level_radii) and colour: SMALL blue,
-// LARGE red, level 2 green, level 3 amber.
+// One particle per size level, each level its own radius (level_radii) and colour: L0 blue,
+// L1 red, level 2 green, level 3 amber.
 TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
   const std::string dir = scratchDir();
   FrameSpec spec;
@@ -164,7 +164,7 @@ TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
   const auto isAmber = [](Colour c) { return c.r > 180 && c.g > 110 && c.b < 100 && c.r > c.g + 30; };
   const std::function<bool(Colour)> colourOf[] = {isBlue, isRed, isGreen, isAmber};
   for (const auto& p : spec.particles) {
-    const float r = spec.level_radii[p.size_class];
+    const float r = spec.level_radii[p.level];
     const auto centre = projectToPixel(pose.view().data(), pose.projection().data(), {p.x, p.y, p.z}, kWidth, kHeight);
     const auto rim = projectToPixel(pose.view().data(), pose.projection().data(), {p.x + r, p.y, p.z}, kWidth, kHeight);
     const double r_px = rim[0] - centre[0];
@@ -172,10 +172,10 @@ TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
       return pixel(image, static_cast<int>(centre[0] + fraction * r_px), static_cast<int>(centre[1]));
     };
     const Colour c = at(0.0);
-    EXPECT_TRUE(colourOf[p.size_class](c))
-        << "level " << static_cast<int>(p.size_class) << " is " << c.r << " " << c.g << " " << c.b;
-    EXPECT_FALSE(isDark(at(0.75))) << "level " << static_cast<int>(p.size_class) << " drawn smaller than its radius";
-    EXPECT_TRUE(isDark(at(1.35))) << "level " << static_cast<int>(p.size_class) << " drawn larger than its radius";
+    EXPECT_TRUE(colourOf[p.level](c)) << "level " << static_cast<int>(p.level) << " is " << c.r << " " << c.g << " "
+                                      << c.b;
+    EXPECT_FALSE(isDark(at(0.75))) << "level " << static_cast<int>(p.level) << " drawn smaller than its radius";
+    EXPECT_TRUE(isDark(at(1.35))) << "level " << static_cast<int>(p.level) << " drawn larger than its radius";
   }
 }
 

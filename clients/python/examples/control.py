@@ -16,6 +16,12 @@ from _common import parser, security
 from sph_client import ControlClient, ControlError, ControlTimeout, Endpoints, method_name
 
 
+def level_text(status) -> str:
+    """ "L0 a, L1 b, ...": the status's level_counts, or the deprecated two counts of an older server."""
+    counts = list(status.level_counts) or [status.small_count, status.large_count]
+    return ", ".join(f"L{k} {n}" for k, n in enumerate(counts))
+
+
 def arguments_for(verb, rest):
     if verb == "load_scene":
         return {"scene": rest[0]}
@@ -54,7 +60,7 @@ def main():
     s = reply.status
     print(f"ok (request {reply.request_id}): {s.scene} / {s.preset} / {method_name(s.method)}, {'paused' if s.paused else 'running'}, "
           f"step {s.step}, {s.steps_per_second:.1f} steps/s, {s.particle_count} particles "
-          f"({s.large_count} large, {s.small_count} small), {s.subscribers} subscribers, gaze age {s.gaze_age_ms:.0f} ms")
+          f"({level_text(s)}), {s.subscribers} subscribers, gaze age {s.gaze_age_ms:.0f} ms")
     print(f"   scenes: {', '.join(s.scenes)}")
     print(f"   parameters: {', '.join(f'{k}={v:g}' for k, v in sorted(s.parameters.items()))}")
     return 0

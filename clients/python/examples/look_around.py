@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Look around with gaze: send a gaze point that wanders over the screen (or circles) and watch the
-server refine where it lands: the SMALL particles follow the gaze. Optionally also send a camera
+server refine where it lands: the L0 particles follow the gaze. Optionally also send a camera
 pose, as a viewer does, so the gaze refers to that camera.
 
     /usr/bin/python3 clients/python/examples/look_around.py --seconds 10 --pattern circle
@@ -11,7 +11,7 @@ import time
 import numpy as np
 
 from _common import parser, security
-from sph_client import CLASS_SMALL, Endpoints, FrameSubscriber, GazePublisher, PosePublisher, gaze_patterns, pb
+from sph_client import FINEST_LEVEL, Endpoints, FrameSubscriber, GazePublisher, PosePublisher, gaze_patterns, pb
 
 
 def main():
@@ -39,12 +39,12 @@ def main():
             frame = frames.recv(timeout_s=1.0 / args.hz)
             if frame is not None and now >= next_print:
                 g = frame.message.gaze
-                small = frame.positions[frame.size_classes == CLASS_SMALL]
+                small = frame.positions[frame.size_classes == FINEST_LEVEL]
                 centre = "-" if len(small) == 0 else np.array2string(small.mean(axis=0), precision=2)
                 mine = "ours" if g.source_id == "look_around" else f"from {g.source_id or 'nobody'}"
                 print(f"t={now - start:5.2f}s looking at ({x:.2f}, {y:.2f}); frame {frame.sequence} used "
                       f"({g.x:.2f}, {g.y:.2f}) {mine}, {pb.GazeMode.Name(g.mode).replace('GAZE_MODE_', '').lower()}: "
-                      f"{len(small)} SMALL particles around {centre}")
+                      f"{len(small)} L0 particles around {centre}")
                 next_print = now + 0.5
     finally:
         for s in (gaze, pose, frames):

@@ -7,7 +7,7 @@
 import numpy as np
 
 from _common import parser, security
-from sph_client import CLASS_SMALL, Endpoints, FrameSubscriber, method_name, pb
+from sph_client import FINEST_LEVEL, Endpoints, FrameSubscriber, method_name, pb
 
 
 def main():
@@ -24,9 +24,9 @@ def main():
                 return 1
             m = frame.message
             lo, hi = frame.positions.min(axis=0), frame.positions.max(axis=0)
-            small = int(np.count_nonzero(frame.size_classes == CLASS_SMALL))
+            small = int(np.count_nonzero(frame.size_classes == FINEST_LEVEL))
             print(f"frame {m.sequence} step {m.step} t={m.sim_time:.2f}s {m.scene}/{method_name(m.method)}: "
-                  f"{len(frame.positions)} particles ({small} small), "
+                  f"{len(frame.positions)} particles ({small} at L0), "
                   f"x {lo[0]:.2f}..{hi[0]:.2f} y {lo[1]:.2f}..{hi[1]:.2f} z {lo[2]:.2f}..{hi[2]:.2f}, "
                   f"gaze {pb.GazeMode.Name(m.gaze.mode).replace('GAZE_MODE_', '').lower()}, "
                   f"step {m.timings.total_ms:.2f} ms")

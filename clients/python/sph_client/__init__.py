@@ -12,6 +12,7 @@ from .endpoints import Endpoints
 from .frames import (
     CLASS_LARGE,
     CLASS_SMALL,
+    FINEST_LEVEL,
     MAX_SIZE_LEVELS,
     DecodedFrame,
     FrameDecodeError,
@@ -26,6 +27,7 @@ from .publishers import GazePublisher, PosePublisher, look_at, now_us, perspecti
 __all__ = [
     "CLASS_LARGE",
     "CLASS_SMALL",
+    "FINEST_LEVEL",
     "ControlClient",
     "ControlError",
     "ControlTimeout",

@@ -18,8 +18,10 @@ import zmq
 from . import curve
 from .proto import pb
 
-# Size levels: the thesis's two classes are levels 0 and 1; the foveated method adds coarser ones.
-CLASS_SMALL = 0
+# Size levels: L0 is the finest, each level twice the mass of the one below.
+FINEST_LEVEL = 0
+# Deprecated aliases (the thesis's names for L0 and L1), kept for one version.
+CLASS_SMALL = FINEST_LEVEL
 CLASS_LARGE = 1
 MAX_SIZE_LEVELS = 16  # the most levels a frame may declare in level_radii (as the viewer)
 NEWEST_ONLY_QUEUE = 4  # frames a conflating FrameSubscriber's socket holds between reads (as the viewer)
@@ -36,8 +38,8 @@ class FrameDecodeError(ValueError):
 class DecodedFrame:
     """A checked frame. `positions` is (n, 3) float32; for FLOAT32 frames it is a read-only view of
     the message's bytes (no copy), for QUANTIZED16 frames it is computed from `quantized`, the raw
-    (n, 3) uint16 view. `size_classes` is a (n,) uint8 view of each particle's size level (0 SMALL,
-    1 LARGE, 2.. the foveated method's coarser levels); `level_radii` the radius of each level in
+    (n, 3) uint16 view. `size_classes` is a (n,) uint8 view of each particle's size level (0: L0,
+    the finest, up to the run's coarsest); `level_radii` the radius of each level in
     metres, indexed by that byte (the frame's level_radii, or (radius_small, radius_large) from a
     server that sends none); `velocities` an (n, 3) float32 view or None."""
 
@@ -55,7 +57,8 @@ class DecodedFrame:
         return np.asarray(self.level_radii, dtype=np.float32)[self.size_classes]
 
     def level_counts(self) -> np.ndarray:
-        """Particles per size level, one entry per level of `level_radii`."""
+        """Particles per size level, L0 first, one entry per level of `level_radii` (counted from
+        the particles' level bytes, so frames of servers without `level_counts` give them too)."""
         return np.bincount(self.size_classes, minlength=len(self.level_radii))
 
     @property
@@ -113,7 +116,7 @@ def _check_levels(classes: np.ndarray, radii: tuple[float, ...], declared: bool)
     if declared:
         raise FrameDecodeError(f"size level {level} is beyond the {len(radii)} levels of level_radii")
     # Worded as before level_radii for two-class frames, so old and new clients report alike.
-    raise FrameDecodeError(f"size class {level} is neither SMALL (0) nor LARGE (1)")
+    raise FrameDecodeError(f"size class {level} is neither L0 (0) nor L1 (1)")
 
 
 def decode_frame(message: "pb.Frame", check_finite: bool = True) -> DecodedFrame:

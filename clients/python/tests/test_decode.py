@@ -117,7 +117,7 @@ class DecodeFrame(unittest.TestCase):
     def test_refuses_a_level_beyond_level_radii(self):
         self.assertRefused(make_frame(POSITIONS, [0, 3, 1], level_radii=[0.01, 0.02, 0.03]),
                            "size level 3 is beyond the 3 levels")
-        self.assertRefused(make_frame(POSITIONS, [0, 2, 1]), "size class 2 is neither SMALL (0) nor LARGE (1)")
+        self.assertRefused(make_frame(POSITIONS, [0, 2, 1]), "size class 2 is neither L0 (0) nor L1 (1)")
 
     def test_refuses_bad_level_radii(self):
         self.assertRefused(make_frame(POSITIONS, [0, 0, 0], level_radii=[0.01, math.nan]), "level_radii[1]")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "sph/adaptive/decide.h"
 #include "sph/adaptive/split_merge.h"
@@ -21,9 +22,14 @@ void requireAdaptive(Method method) {
 
 }  // namespace
 
-AdaptiveController::AdaptiveController(Method method, const AdaptiveConfig& config, const ScreenCamera& camera)
-    : method_(method), config_(config), camera_(camera) {
+AdaptiveController::AdaptiveController(Method method, int levels, const AdaptiveConfig& config,
+                                       const ScreenCamera& camera)
+    : method_(method), levels_(levels), config_(config), camera_(camera) {
   requireAdaptive(method);
+  if (levels < kMinLevels || levels > kMaxLevels) {
+    throw std::invalid_argument("adaptive controller: " + std::to_string(levels) + " levels, not " +
+                                std::to_string(kMinLevels) + " to " + std::to_string(kMaxLevels));
+  }
   config_.validate();
   if (!isUsable(camera_)) throw std::invalid_argument("adaptive controller: unusable camera");
 }
@@ -40,7 +46,7 @@ void AdaptiveController::setConfig(const AdaptiveConfig& config) {
 
 void AdaptiveController::setMethod(Method method) {
   requireAdaptive(method);
-  if (coarsestClass(method) != coarsestClass(method_)) {
+  if (coarsestLevel(method, levels_) != coarsestLevel(method_, levels_)) {
     throw std::invalid_argument(std::string("the ") + methodName(method) +
                                 " method needs a new simulation (other levels)");
   }
@@ -76,7 +82,7 @@ void AdaptiveController::apply(Simulation& sim) {
     // at once rather than a level a frame later. Water the eye does not see (hidden, off the
     // display) and the rules that do not come from the eye (thin, shallow, graded) split a level
     // a step: a further pass costs a neighbour search and a decision over all the water.
-    for (int pass = 2; pass < kSizeClassCount && view.still_coarse > 0; ++pass) {
+    for (int pass = 2; pass < levels_ && view.still_coarse > 0; ++pass) {
       sim.rebuildNeighbors();
       decision_.resize(sim.particles().size());
       partner_.assign(sim.particles().size(), -1);
@@ -115,7 +121,7 @@ DecisionCounts AdaptiveController::decideThesis(Simulation& sim, GazeMode mode) 
 
 void AdaptiveController::finish(Simulation& sim, const DecisionCounts& wanted, GazeMode mode) {
   const ParticleSet& p = sim.particles();
-  const SizeClass coarsest = coarsestClass(method_);
+  const Level coarsest = coarsestLevel(method_, levels_);
   stats_.split_wanted = wanted.split_wanted;
   stats_.merge_wanted = wanted.merge_wanted;
   if (wanted.merge_wanted > 0) {
@@ -139,10 +145,10 @@ void AdaptiveController::finish(Simulation& sim, const DecisionCounts& wanted, G
   stats_.gaze_age_s = gaze_.age_s;
 }
 
-std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, const AdaptiveConfig& config,
+std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, int levels, const AdaptiveConfig& config,
                                                            const ScreenCamera& camera) {
   if (method == Method::Regular) return nullptr;
-  return std::make_unique<AdaptiveController>(method, config, camera);
+  return std::make_unique<AdaptiveController>(method, levels, config, camera);
 }
 
 }  // namespace sph

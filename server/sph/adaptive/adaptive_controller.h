@@ -17,8 +17,8 @@
 namespace sph {
 
 struct AdaptiveStats {
-  int splits = 0;        // LARGE particles split this step
-  int merges = 0;        // SMALL pairs merged this step
+  int splits = 0;        // L1 particles split this step
+  int merges = 0;        // L0 pairs merged this step
   int split_wanted = 0;  // particles whose decision was SPLIT (including ones with no room)
   int merge_wanted = 0;  // particles whose decision was MERGE (including unpaired ones)
   GazeMode gaze_mode = GazeMode::None;
@@ -34,9 +34,10 @@ struct AdaptiveStats {
 class AdaptiveController : public AdaptiveStep {
  public:
   // `method` must not be Method::Regular (it has no adaptive step). Throws std::invalid_argument
-  // for that and for an invalid config. setMethod keeps the method's levels (coarsestClass):
+  // for that, for an invalid config and for `levels` (the run's level count, SimParams::levels)
+  // outside [kMinLevels, kMaxLevels]. setMethod keeps the method's levels (coarsestLevel):
   // changing them needs a new Simulation (its grid fits the coarsest level's support).
-  AdaptiveController(Method method, const AdaptiveConfig& config, const ScreenCamera& camera);
+  AdaptiveController(Method method, int levels, const AdaptiveConfig& config, const ScreenCamera& camera);
 
   void setGaze(const GazeInput& gaze) { gaze_ = gaze; }
   void setCamera(const ScreenCamera& camera);
@@ -50,10 +51,11 @@ class AdaptiveController : public AdaptiveStep {
   const AdaptiveStats& lastStats() const { return stats_; }
 
   void apply(Simulation& sim) override;
-  SizeClass coarsest() const override { return coarsestClass(method_); }
+  Level coarsest() const override { return coarsestLevel(method_, levels_); }
 
  private:
   Method method_;
+  int levels_;
   AdaptiveConfig config_;
   ScreenCamera camera_;
   GazeInput gaze_;
@@ -75,7 +77,7 @@ class AdaptiveController : public AdaptiveStep {
 };
 
 // nullptr for Method::Regular.
-std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, const AdaptiveConfig& config,
+std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, int levels, const AdaptiveConfig& config,
                                                            const ScreenCamera& camera);
 
 }  // namespace sph

@@ -17,15 +17,19 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
       static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());  // (3.44)
   const BoxState box = sim.boxNow();
   const Boundary& boundary = sim.scene().boundary;
-  const SurfaceArrays arrays{p.position.data()->data(), p.surface_hop.data(),
-                             p.normal_length.data(),    p.pressure.data(),
-                             p.size_class.data(),       sim.grid().neighborCounts().data(),
-                             p.surface_distance.data(), out.data()};
+  const SurfaceArrays arrays{p.position.data()->data(),
+                             p.surface_hop.data(),
+                             p.normal_length.data(),
+                             p.pressure.data(),
+                             p.level.data(),
+                             sim.grid().neighborCounts().data(),
+                             p.surface_distance.data(),
+                             out.data()};
   const DecisionPassForms forms = decisionPassForms();
 
   // Character field, eq. (3.45), and the decision, eq. (3.46). N_max is taken per size class: the
   // classes have different neighbour counts by design (x_SMALL 50, x_LARGE 20, table 3.2), and one
-  // global maximum would make every LARGE particle look "isolated" next to SMALL ones, so splitting
+  // global maximum would make every L1 particle look "isolated" next to L0 ones, so splitting
   // would creep inwards step after step. Particles the distance field has not reached yet are
   // deeper than every reached one: they take d = dmax.
   const auto inverse = [](float v) { return v > 0.0f ? 1.0f / v : 0.0f; };
@@ -50,14 +54,14 @@ DecisionCounts decideBySurface(Simulation& sim, const AdaptiveConfig& config, st
     {
       all.pressure = std::max(all.pressure, mine.pressure);
       all.distance = std::max(all.distance, mine.distance);
-      for (int c = 0; c < kSizeClassCount; ++c) all.neighbors[c] = std::max(all.neighbors[c], mine.neighbors[c]);
+      for (int c = 0; c < kMaxLevels; ++c) all.neighbors[c] = std::max(all.neighbors[c], mine.neighbors[c]);
     }
 #pragma omp barrier
     CharacterField local = field;
     local.max_distance = all.distance;
     local.inv_dmax = inverse(all.distance);
     local.inv_fmax = inverse(all.pressure);
-    for (int c = 0; c < kSizeClassCount; ++c) local.inv_nmax[c] = inverse(static_cast<float>(all.neighbors[c]));
+    for (int c = 0; c < kMaxLevels; ++c) local.inv_nmax[c] = inverse(static_cast<float>(all.neighbors[c]));
     const DecisionCounts counts = forms.characterDecisions(arrays, share.begin, share.end, local);
     split_wanted += counts.split_wanted;
     merge_wanted += counts.merge_wanted;
@@ -84,7 +88,7 @@ DecisionCounts decideByGaze(const ParticleSet& particles, const ScreenCamera& ca
   {
     const ThreadShare share = threadShare(n);
     const DecisionCounts mine =
-        forms.gazeDecisions(gaze, xyz, radius, particles.size_class.data(), out.data(), share.begin, share.end, hybrid);
+        forms.gazeDecisions(gaze, xyz, radius, particles.level.data(), out.data(), share.begin, share.end, hybrid);
     split_wanted += mine.split_wanted;
     merge_wanted += mine.merge_wanted;
   }

@@ -15,14 +15,14 @@ namespace sph {
 
 enum Decision : std::int8_t { kRemain = 0, kSplit = 1, kMerge = 2 };
 
-// Whether a decision acts on a particle of level c: every level above SMALL splits (into two of
+// Whether a decision acts on a particle of level c: every level above L0 splits (into two of
 // the level below), every level below `coarsest` merges (two into one of the level above); the
-// thesis's methods have coarsest LARGE, so only LARGE splits and only SMALL merges. Branch-free
+// thesis's methods have coarsest L1, so only L1 splits and only L0 merges. Branch-free
 // (`&`), for the scans over every particle. (The vectorised decide loops count with their own
 // arithmetic: with these, GCC 12 vectorised the gaze decision less fully.)
-inline bool wantsSplit(std::int8_t decision, SizeClass c) { return (decision == kSplit) & (c != SizeClass::Small); }
-inline bool wantsMerge(std::int8_t decision, SizeClass c, SizeClass coarsest) {
-  return (decision == kMerge) & (classIndex(c) < classIndex(coarsest));
+inline bool wantsSplit(std::int8_t decision, Level c) { return (decision == kSplit) & (c != Level{0}); }
+inline bool wantsMerge(std::int8_t decision, Level c, Level coarsest) {
+  return (decision == kMerge) & (levelIndex(c) < levelIndex(coarsest));
 }
 
 // What the decisions ask for: particles that can split flagged SPLIT, ones that can merge MERGE.

@@ -15,7 +15,7 @@ namespace sph {
 struct FieldMaxima {
   float pressure = 0.0f;
   float distance = 0.0f;
-  std::uint32_t neighbors[kSizeClassCount] = {0, 0};
+  std::uint32_t neighbors[kMaxLevels] = {0, 0};
 };
 
 // The arrays of the surface decision, restrict-qualified: the flags are bytes, which may otherwise
@@ -25,7 +25,7 @@ struct SurfaceArrays {
   const float* __restrict hop;
   const float* __restrict normal_length;
   const float* __restrict pressure;
-  const SizeClass* __restrict size_class;
+  const Level* __restrict level;
   const std::uint32_t* __restrict neighbors;
   float* __restrict distance;  // surface_distance, written by the first pass
   std::int8_t* __restrict out;
@@ -37,7 +37,7 @@ struct CharacterField {
   float alpha, beta, gamma, inv_weights;
   float split_below, merge_from;
   float max_distance, inv_dmax, inv_fmax;
-  float inv_nmax[kSizeClassCount];
+  float inv_nmax[kMaxLevels];
 };
 
 // eq. (3.47)-(3.48) for one particle, with the hysteresis ring. Distances are in units of the
@@ -72,7 +72,7 @@ struct DecisionPassForms {
   DecisionCounts (*characterDecisions)(const SurfaceArrays& arrays, std::size_t begin, std::size_t end,
                                        const CharacterField& field);
   DecisionCounts (*gazeDecisions)(const GazeCircle& gaze, const float* xyz, const float* radius,
-                                  const SizeClass* size_class, std::int8_t* out, std::size_t begin, std::size_t end,
+                                  const Level* size_class, std::int8_t* out, std::size_t begin, std::size_t end,
                                   bool hybrid);
 };
 

@@ -57,11 +57,11 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   const NeighborGrid& grid = sim.grid();
-  const auto levels = sim.params().classes();
-  constexpr int kCoarsest = kSizeClassCount - 1;
+  const auto levels = sim.params().levelProps();
+  const int coarsest = std::clamp(sim.params().levels, kMinLevels, kMaxLevels) - 1;
   // Each level's width in finest particles.
-  float width[kSizeClassCount];
-  for (int k = 0; k < kSizeClassCount; ++k) width[k] = static_cast<float>(levels[k].radius / levels[0].radius);
+  float width[kMaxLevels];
+  for (int k = 0; k < kMaxLevels; ++k) width[k] = static_cast<float>(levels[k].radius / levels[0].radius);
   const auto rest_density = static_cast<float>(sim.params().rest_density);
   const Projector projector(camera);
   const float aspect = static_cast<float>(projector.aspect());
@@ -79,13 +79,13 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto least_spread = static_cast<float>(config.foveated_shallow_spread);
   const auto hold_frames =
       static_cast<int>(std::min(std::ceil(config.foveated_merge_hold_s / sim.params().time_step - 1e-9), 65535.0));
-  // The free surface, as the surface method finds it (3.44), |n| scaled to LARGE's support: the
+  // The free surface, as the surface method finds it (3.44), |n| scaled to L1's support: the
   // colour field's gradient falls as 1 / h with the particle's own kernel.
   const auto surface_threshold = static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());
   const auto large_support = static_cast<float>(levels[1].support);
   const auto margin = static_cast<float>(config.foveated_coarsen_margin);
   const auto thin_fill = static_cast<float>(config.foveated_thin_fill);
-  const int thin_level = std::clamp(static_cast<int>(config.foveated_thin_level), 0, kCoarsest);
+  const int thin_level = std::clamp(static_cast<int>(config.foveated_thin_level), 0, coarsest);
 
   scratch.allowed.resize(n);
   scratch.budget.resize(n);
@@ -125,8 +125,10 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // periphery, never the gaze point.
       const float disc_deg = static_cast<float>(kDegrees) * 2.0f * tan_half * disc.radius;
       const bool gazed_on = e <= disc_deg;
-      scratch.allowed[i] = disc.in_front ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
-      scratch.budget[i] = disc.in_front ? q * (1.0f + mar_gain * e) : inf;
+      // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
+      // apart from the distance ratio, 0 behind the eye).
+      scratch.allowed[i] = on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
+      scratch.budget[i] = on_screen ? q * (1.0f + mar_gain * e) : inf;
       if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
       if (on_screen && !hidden && gazed_on && depth < own_gazed_depth) {  // ascending i: a tie keeps the lower index
         own_gazed_depth = depth;
@@ -147,32 +149,34 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
     // The finest level within one neighbour hop (the particle itself included).
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      int finest = classIndex(p.size_class[i]);
-      for (const std::uint32_t j : grid.neighbors(i)) finest = std::min(finest, classIndex(p.size_class[j]));
+      int finest = levelIndex(p.level[i]);
+      for (const std::uint32_t j : grid.neighbors(i)) finest = std::min(finest, levelIndex(p.level[j]));
       scratch.finest_near[i] = static_cast<std::int8_t>(finest);
     }
 #pragma omp barrier
     // Pass 2: the targets and the decisions.
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      const int level = classIndex(p.size_class[i]);
+      const int level = levelIndex(p.level[i]);
       const float depth = scratch.depth[i];
       const float distance_ratio = fovea_depth > 0.0f ? std::max(depth, 0.0f) / fovea_depth : 1.0f;
-      const float allowed = scratch.allowed[i] * distance_ratio;  // in finest widths at the gaze
-      const float budget = scratch.budget[i] * distance_ratio;    // the same at g = 1
+      // In finest widths at the gaze; unseen water (inf) stays inf whatever its distance.
+      const bool seen = std::isfinite(scratch.allowed[i]);
+      const float allowed = seen ? scratch.allowed[i] * distance_ratio : scratch.allowed[i];
+      const float budget = seen ? scratch.budget[i] * distance_ratio : scratch.budget[i];
       const float d = p.surface_distance[i];
       int acuity = 0;
-      while (acuity < kCoarsest && width[acuity + 1] <= allowed) ++acuity;
+      while (acuity < coarsest && width[acuity + 1] <= allowed) ++acuity;
       int coarsen_ok = acuity;  // the eye allows it with the margin
       while (coarsen_ok > 0 && width[coarsen_ok] * margin > allowed) --coarsen_ok;
-      if (d >= hidden_depth) acuity = kCoarsest;
-      if (d >= hidden_depth * margin) coarsen_ok = kCoarsest;
+      if (d >= hidden_depth) acuity = coarsest;
+      if (d >= hidden_depth * margin) coarsen_ok = coarsest;
       // The finest level among the neighbours, and within two hops: a merged particle sits
       // between the two and reaches farther than either, so it must find no finer level there.
-      int finest_neighbour = kCoarsest;
+      int finest_neighbour = coarsest;
       int finest_two_hops = scratch.finest_near[i];
       Eigen::Matrix3f moment = Eigen::Matrix3f::Zero();  // second moment of the neighbours' offsets about i
       for (const std::uint32_t j : grid.neighbors(i)) {
-        finest_neighbour = std::min(finest_neighbour, classIndex(p.size_class[j]));
+        finest_neighbour = std::min(finest_neighbour, levelIndex(p.level[j]));
         finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
         const Eigen::Vector3f r = p.position[j] - p.position[i];
         moment.noalias() += r * r.transpose();
@@ -205,7 +209,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       std::int8_t decision = kRemain;
       if (level > target) {
         decision = kSplit;
-      } else if (!splits_only && level <= coarsen_to && level < kCoarsest && p.placed[i] == kNotPlaced &&
+      } else if (!splits_only && level <= coarsen_to && level < coarsest && p.placed[i] == kNotPlaced &&
                  p.coarsen_wait[i] >= hold_frames) {
         decision = kMerge;
       }
@@ -225,7 +229,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   view.over_budget = over_budget;
   view.still_coarse = still_coarse;
   view.fovea_depth = scratch.fovea_depth;
-  view.fovea_level = gazed < n ? classIndex(p.size_class[gazed]) - (out[gazed] == kSplit) : -1;
+  view.fovea_level = gazed < n ? levelIndex(p.level[gazed]) - (out[gazed] == kSplit) : -1;
   return {split_wanted, merge_wanted};
 }
 

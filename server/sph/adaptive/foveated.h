@@ -15,7 +15,7 @@
 //            thinner than the particle is wide) stays at most at the thin level.
 //   graded   no particle is more than one level coarser than its finest neighbour: every pair
 //            the solvers see is of one level or two neighbouring ones (mass ratio 2, as the
-//            thesis's SMALL-LARGE pairs).
+//            thesis's L0-L1 pairs).
 //
 // Every particle writes only its own decision and target: the result does not depend on the
 // thread count.

@@ -1,5 +1,7 @@
 #include "sph/adaptive/method.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -48,12 +50,14 @@ std::vector<std::string> methodNames() {
   return names;
 }
 
-SizeClass startClass(Method m) {
-  if (m == Method::Regular) return SizeClass::Small;
-  return coarsestClass(m);
+Level startLevel(Method m, int levels) {
+  if (m == Method::Regular) return Level{0};
+  return coarsestLevel(m, levels);
 }
 
-SizeClass coarsestClass(Method m) { return m == Method::Foveated ? sizeLevel(kSizeClassCount - 1) : SizeClass::Large; }
+Level coarsestLevel(Method m, int levels) {
+  return m == Method::Foveated ? asLevel(std::clamp(levels, kMinLevels, kMaxLevels) - 1) : Level{1};
+}
 
 bool usesGaze(Method m) { return m == Method::Gaze || m == Method::Hybrid || m == Method::Foveated; }
 
@@ -95,7 +99,7 @@ void AdaptiveConfig::validate() const {
   requireRange("foveated_hidden_depth", foveated_hidden_depth, 0.0, 1e6);
   requireRange("foveated_coarsen_margin", foveated_coarsen_margin, 1.0, 100.0);
   requireRange("foveated_thin_fill", foveated_thin_fill, 0.0, 1.0);
-  requireRange("foveated_thin_level", foveated_thin_level, 0.0, kSizeClassCount - 1);
+  requireRange("foveated_thin_level", foveated_thin_level, 0.0, kMaxLevels - 1);
   requireRange("foveated_shallow_spread", foveated_shallow_spread, 0.0, 1.0);
   requireRange("foveated_merge_hold_s", foveated_merge_hold_s, 0.0, 600.0);
   if (foveated_thin_level != std::floor(foveated_thin_level)) {

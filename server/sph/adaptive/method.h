@@ -18,11 +18,11 @@ const char* methodName(Method m);
 // False when `name` is not one of regular, surface, gaze, hybrid, foveated.
 bool methodByName(const std::string& name, Method& out);
 std::vector<std::string> methodNames();
-// Regular runs all SMALL; the thesis's adaptive methods start LARGE and split where they need
-// detail; foveated starts at its coarsest level.
-SizeClass startClass(Method m);
-// The coarsest level the method makes: LARGE for the thesis's, the last level for foveated.
-SizeClass coarsestClass(Method m);
+// Regular runs all at L0; the thesis's adaptive methods start at L1 and split where they need
+// detail; foveated starts at its coarsest level. `levels`: the run's level count (SimParams::levels).
+Level startLevel(Method m, int levels);
+// The coarsest level the method makes: L1 for the thesis's, L(levels - 1) for foveated.
+Level coarsestLevel(Method m, int levels);
 // Gaze, hybrid and foveated refine where the eye looks, so they need a gaze source.
 bool usesGaze(Method m);
 
@@ -35,7 +35,7 @@ struct AdaptiveConfig {
   // Box walls count as "boundary" for d in (3.45) when true (He et al.; the thesis's figure 3.2).
   bool surface_includes_walls = true;
   // A particle is a surface particle for (3.44) where |n| >= surface_normal_scale * l. The thesis
-  // uses l itself (scale 1). With mixed sizes the colour field at the SMALL/LARGE interface inside
+  // uses l itself (scale 1). With mixed sizes the colour field at the L0/L1 interface inside
   // the fluid exceeds l, and at scale 1 (or 1.5) the split band creeps inwards step by
   // step; 2 stops that on a resting pool (tests/adaptive) and still finds the free surface.
   double surface_normal_scale = 2.0;

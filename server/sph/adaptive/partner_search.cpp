@@ -41,7 +41,7 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
 namespace detail {
 
 void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p, const NeighborGrid& grid,
-                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner, SizeClass coarsest,
+                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner, Level coarsest,
                         PartnerScratch& scratch) {
   const std::size_t n = p.size();
   scratch.merging.resize(n);
@@ -51,8 +51,8 @@ void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p,
   {
     const ThreadShare share = threadShare(n);
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      merging[i] = static_cast<std::int32_t>(wantsMerge(decision[i], p.size_class[i], coarsest)) *
-                   (classIndex(p.size_class[i]) + 1);
+      merging[i] =
+          static_cast<std::int32_t>(wantsMerge(decision[i], p.level[i], coarsest)) * (levelIndex(p.level[i]) + 1);
     }
 #pragma omp barrier
     // Only the flagged particles search, and they sit together: chunks even out the threads.
@@ -66,7 +66,7 @@ void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& p,
 }  // namespace detail
 
 void choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch) {
+                    std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch) {
   partnerSearchForms().choosePartners(p, grid, decision, partner, coarsest, scratch);
 }
 
@@ -77,7 +77,7 @@ PartnerSearchForms partnerSearchForms() {
 PartnerSearchForms scalar::partnerSearchForms() { return {scalar::choosePartners}; }
 
 void scalar::choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                            std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch) {
+                            std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch) {
   detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, coarsest, scratch);
 }
 

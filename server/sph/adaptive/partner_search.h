@@ -22,21 +22,21 @@ struct PartnerScratch {
 // choice does not depend on the thread count. The AVX-512 form tests the neighbours 16 at a time and chooses exactly as
 // the scalar one (simd_level.h).
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch);
+                    std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
 
 namespace scalar {
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch);
+                    std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
 }  // namespace scalar
 namespace avx512 {
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch);
+                    std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
 }  // namespace avx512
 
 // The partner search as one form (simd_level.h).
 struct PartnerSearchForms {
   void (*choosePartners)(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                         std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch);
+                         std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
 };
 namespace scalar {
 PartnerSearchForms partnerSearchForms();
@@ -56,7 +56,7 @@ using NearestMergingNeighbourFn = std::int32_t (*)(const float* positions, const
 // The search's one parallel region (both forms): flag the merging particles with their level, then
 // each of them searches its list with `nearest`.
 void choosePartnersWith(NearestMergingNeighbourFn nearest, const ParticleSet& particles, const NeighborGrid& grid,
-                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner, SizeClass coarsest,
+                        std::span<const std::int8_t> decision, std::span<std::int32_t> partner, Level coarsest,
                         PartnerScratch& scratch);
 }  // namespace detail
 

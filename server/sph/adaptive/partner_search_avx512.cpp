@@ -63,7 +63,7 @@ std::int32_t nearestMergingNeighbour(const float* pos, const std::uint32_t* ids,
 }  // namespace
 
 void avx512::choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<const std::int8_t> decision,
-                            std::span<std::int32_t> partner, SizeClass coarsest, PartnerScratch& scratch) {
+                            std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch) {
   detail::choosePartnersWith(nearestMergingNeighbour, p, grid, decision, partner, coarsest, scratch);
 }
 

@@ -23,7 +23,7 @@ float symmetricReach(const Vec3& centre, const Vec3& dir, const BoxState& box, f
 }
 
 // `dir` turned along the walls that would cut it short. A parent in the wall layer sits about a
-// LARGE half-spacing from the wall, which is all but the SMALL radius the children keep off it,
+// L1 half-spacing from the wall, which is all but the L0 radius the children keep off it,
 // so along a direction into the wall its children landed on one point; nothing separates two
 // particles on one point (the kernel's gradient vanishes there), and the doubled mass kicked the
 // water around it (a dfsph tank split by the surface method moved much faster than with the

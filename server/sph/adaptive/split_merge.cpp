@@ -26,7 +26,7 @@ void keepOutOfObstacles(const Boundary& boundary, const BoxState& box, float rad
 Vec3 splitDirection(std::uint32_t id) { return hashedUnitVector(id); }
 
 void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision, std::span<std::int32_t> partner,
-                    float reach, SizeClass coarsest, StragglerScratch& scratch) {
+                    float reach, Level coarsest, StragglerScratch& scratch) {
   // Each thread lists the stragglers of its contiguous index range at the start of that range
   // (branch-free: whether a particle is a straggler follows no pattern a predictor could learn);
   // the ranges are then closed up in thread order, so the list is in index order whatever the
@@ -42,7 +42,7 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
     std::size_t count = 0;
     for (std::size_t i = share.begin; i < share.end; ++i) {
       lonely[share.begin + count] = static_cast<std::uint32_t>(i);
-      count += (partner[i] < 0) & wantsMerge(decision[i], p.size_class[i], coarsest);
+      count += (partner[i] < 0) & wantsMerge(decision[i], p.level[i], coarsest);
     }
     ranges[2 * share.thread] = share.begin;
     ranges[2 * share.thread + 1] = count;
@@ -80,11 +80,11 @@ void pairStragglers(const ParticleSet& p, std::span<const std::int8_t> decision,
   for (std::size_t s = 0; s < count; ++s) {
     const std::uint32_t a = by_x[s];
     const Vec3 xa = p.position[lonely[a]];
-    const SizeClass level = p.size_class[lonely[a]];
+    const Level level = p.level[lonely[a]];
     const float own_reach = reach * p.support[lonely[a]];
     float best = own_reach * own_reach;
     const auto consider = [&](std::uint32_t b) {
-      if (p.size_class[lonely[b]] != level) return;
+      if (p.level[lonely[b]] != level) return;
       const float d2 = (xa - p.position[lonely[b]]).squaredNorm();
       if (d2 < best || (d2 == best && nearest[a] >= 0 && static_cast<std::int32_t>(b) < nearest[a])) {
         best = d2;
@@ -107,10 +107,10 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
                                  std::vector<std::uint32_t>& split_list) {
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
-  const auto props = sim.params().classes();
-  const auto below = [&](std::size_t i) { return sizeLevel(classIndex(p.size_class[i]) - 1); };
-  const auto above = [&](std::size_t i) { return sizeLevel(classIndex(p.size_class[i]) + 1); };
-  const auto radiusOf = [&](SizeClass level) { return static_cast<float>(props[classIndex(level)].radius); };
+  const auto props = sim.params().levelProps();
+  const auto below = [&](std::size_t i) { return asLevel(levelIndex(p.level[i]) - 1); };
+  const auto above = [&](std::size_t i) { return asLevel(levelIndex(p.level[i]) + 1); };
+  const auto radiusOf = [&](Level level) { return static_cast<float>(props[levelIndex(level)].radius); };
   const BoxState box = sim.boxNow();
   const Boundary& boundary = sim.scene().boundary;
   SplitMergeCounts counts;
@@ -123,7 +123,7 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
   std::uint32_t splits = 0;
   for (std::size_t i = 0; i < n; ++i) {
     splitting[splits] = static_cast<std::uint32_t>(i);
-    splits += wantsSplit(decision[i], p.size_class[i]);
+    splits += wantsSplit(decision[i], p.level[i]);
   }
   // Where the children go is the solver's choice (FluidSolver::splitPlacement): along the roomiest
   // axis among the parent's neighbours (split_axis.h) or along a direction drawn from the parent's
@@ -169,10 +169,10 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
         a = p.position[i] + 2.0f * wanted * awayFromNearestFaces(p.position[i], box);
         b = p.position[i];
       }
-      const SizeClass level = below(i);
+      const Level level = below(i);
       keepOutOfObstacles(boundary, box, radiusOf(level), a);
       keepOutOfObstacles(boundary, box, radiusOf(level), b);
-      p.splitInto(i, c, level, props[classIndex(level)]);
+      p.splitInto(i, c, level, props[levelIndex(level)]);
       p.position[i] = a;
       p.position[c] = b;
     }
@@ -191,8 +191,8 @@ SplitMergeCounts applySplitMerge(Simulation& sim, std::span<const std::int8_t> d
       continue;
     }
     const auto k = static_cast<std::size_t>(j);
-    const SizeClass level = above(i);
-    p.mergeInto(i, k, level, props[classIndex(level)]);
+    const Level level = above(i);
+    p.mergeInto(i, k, level, props[levelIndex(level)]);
     keepOutOfObstacles(boundary, box, radiusOf(level), p.position[i]);
     keep[k] = 0;
     ++merges;

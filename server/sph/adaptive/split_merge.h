@@ -1,6 +1,6 @@
 // Applying the decisions: split (3.37)-(3.39), merge (3.40)-(3.43), then the merged-away particles
 // leave the arrays (ParticleSet::swapRemove moves every attribute). Mass is conserved exactly: each
-// level's mass is exactly twice the one below's (params.h; LARGE twice SMALL, checked when the
+// level's mass is exactly twice the one below's (params.h; L1 twice L0, checked when the
 // parameters are), and split and merge only ever trade one for two of the level below.
 #pragma once
 
@@ -27,14 +27,14 @@ struct StragglerScratch {
 // level within `reach` times the particle's support (ties to the lower index), at most 512 per
 // step (the lowest indices), so the result is deterministic.
 void pairStragglers(const ParticleSet& particles, std::span<const std::int8_t> decision,
-                    std::span<std::int32_t> partner, float reach, SizeClass coarsest, StragglerScratch& scratch);
+                    std::span<std::int32_t> partner, float reach, Level coarsest, StragglerScratch& scratch);
 
 struct SplitMergeCounts {
   int splits = 0;
   int merges = 0;
 };
 
-// Splits every particle above SMALL flagged SPLIT into two children of the level below, placed
+// Splits every particle above L0 flagged SPLIT into two children of the level below, placed
 // symmetrically about its centre (split_axis.h: on incompressible water along the axis with the most room among its
 // neighbours, or from a box corner one at the centre and one into the box; on the thesis's along a
 // direction drawn from its id; deterministic), and merges

@@ -20,14 +20,14 @@ constexpr int kFloorAxis = 1;
 
 }  // namespace
 
-void FloorContact::find(ParticleSet& p, const BoxState& box, const std::array<WallReach, kSizeClassCount>& reach,
-                        const std::array<float, kSizeClassCount>& spacing, float dt) {
+void FloorContact::find(ParticleSet& p, const BoxState& box, const std::array<WallReach, kMaxLevels>& reach,
+                        const std::array<float, kMaxLevels>& spacing, float dt) {
   const std::size_t n = p.size();
   held_.reserve(p.capacity());
   held_.assign(n, 0);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const auto c = static_cast<std::size_t>(classIndex(p.size_class[i]));
+    const auto c = static_cast<std::size_t>(levelIndex(p.level[i]));
     const float band = kBand * spacing[c];
     Vec3& u = p.velocity[i];
     const Vec3 predicted = p.position[i] + dt * u;

@@ -41,8 +41,8 @@ class FloorContact {
   // Finds the particles held for a step of dt from their velocities as they stand, and removes
   // their velocity into the floor (and into an edge's side walls), relative to the walls'.
   // `reach` and `spacing` per class (IncompressibleSetup).
-  void find(ParticleSet& p, const BoxState& box, const std::array<WallReach, kSizeClassCount>& reach,
-            const std::array<float, kSizeClassCount>& spacing, float dt);
+  void find(ParticleSet& p, const BoxState& box, const std::array<WallReach, kMaxLevels>& reach,
+            const std::array<float, kMaxLevels>& spacing, float dt);
 
   // Removes the held components from an acceleration per particle.
   void hold(std::vector<Vec3>& acceleration) const;

@@ -77,7 +77,7 @@ class FluidSolver {
   virtual double fillInset(double spacing, double /*radius*/) const { return 0.5 * spacing; }
   // How many size levels (params.h) the solver's pair passes handle: every one by default (a
   // mixed pair's kernel from the two supports, pair_kernel.inc).
-  virtual int sizeLevels() const { return kSizeClassCount; }
+  virtual int sizeLevels() const { return kMaxLevels; }
 };
 
 }  // namespace sph

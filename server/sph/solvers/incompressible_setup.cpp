@@ -32,23 +32,23 @@ double latticeGradSquared(const CubicKernel& k, double spacing) {
 
 IncompressibleSetup makeIncompressibleSetup(const Scene& scene, WallReach contact_spacings) {
   IncompressibleSetup s;
-  const auto classes = scene.params.classes();
-  s.kernels = PairKernels::forClasses(classes);
-  for (int c = 0; c < kSizeClassCount; ++c) {
+  const auto classes = scene.params.levelProps();
+  s.kernels = PairKernels::forClasses(classes, scene.params.levels);
+  for (int c = 0; c < kMaxLevels; ++c) {
     const auto cu = static_cast<std::size_t>(c);
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));
     const float spacing = s.spacing[cu];
     s.contact[cu] = WallReach(contact_spacings.floor * spacing, contact_spacings.sides * spacing);
     s.lattice_grad_sq[cu] = s.kernels.mass[cu] * latticeGradSquared(s.kernels[cu], s.spacing[cu]);
   }
-  s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels.classes, s.spacing);
+  s.boundary = std::make_unique<BoundaryVolume>(scene.boundary, s.kernels.classes, s.spacing, scene.params.levels);
   return s;
 }
 
 std::vector<float> restingPressure(const Scene& scene, const IncompressibleSetup& setup, const ParticleSet& p) {
   float top = -std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    top = std::max(top, p.position[i].y() + 0.5f * setup.spacing[classIndex(p.size_class[i])]);
+    top = std::max(top, p.position[i].y() + 0.5f * setup.spacing[levelIndex(p.level[i])]);
   }
   const auto weight = static_cast<float>(scene.params.rest_density * std::abs(scene.params.gravity));
   std::vector<float> pressure(p.size());
@@ -61,7 +61,7 @@ VelocityArrays velocityArraysOf(ParticleSet& p, std::vector<Vec3>& velocity_next
   VelocityArrays v;
   v.n = p.size();
   v.support = p.support.data();
-  v.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  v.class_index = reinterpret_cast<const std::uint8_t*>(p.level.data());
   v.position = p.position.data()->data();
   v.density = p.density.data();
   v.velocity = p.velocity.data()->data();

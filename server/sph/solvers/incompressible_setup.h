@@ -19,16 +19,16 @@
 namespace sph {
 
 struct IncompressibleSetup {
-  PairKernels kernels;                           // each class's kernel and particle mass
-  std::array<float, kSizeClassCount> spacing{};  // cbrt(m / rho0): a resting lattice's
+  PairKernels kernels;                      // each class's kernel and particle mass
+  std::array<float, kMaxLevels> spacing{};  // cbrt(m / rho0): a resting lattice's
   // The nearest a particle's centre may come to the floor and to the other walls (the solver's
   // choice, in spacings: makeIncompressibleSetup). The one-sided walls hold settled water only by
   // compressing it, so its wall layers come to rest on these distances, not where the walls'
   // density would put them; the closer they sit, the more of the water's volume the walls swallow.
-  std::array<WallReach, kSizeClassCount> contact{};
+  std::array<WallReach, kMaxLevels> contact{};
   // On a resting lattice of the class: sum_j m_j |grad W_ij|^2 (the gradient sum itself vanishes
   // by symmetry).
-  std::array<double, kSizeClassCount> lattice_grad_sq{};
+  std::array<double, kMaxLevels> lattice_grad_sq{};
   std::unique_ptr<BoundaryVolume> boundary;
 };
 

@@ -33,7 +33,7 @@ PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& 
   PbfConstants c;
   c.kernels = setup.kernels;
   c.rest_density = static_cast<float>(params.rest_density);
-  for (std::size_t k = 0; k < kSizeClassCount; ++k) {
+  for (std::size_t k = 0; k < kMaxLevels; ++k) {
     // A full resting neighbourhood's constraint denominator (pbf_passes.h): sum_j m_j |grad W|^2 / rho0^2.
     const double full = setup.lattice_grad_sq[k] / (params.rest_density * params.rest_density);
     c.relaxation[k] = static_cast<float>(params.pbf_relaxation * full);
@@ -54,7 +54,7 @@ PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<fl
   a.n = p.size();
   a.mass = p.mass.data();
   a.support = p.support.data();
-  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  a.class_index = reinterpret_cast<const std::uint8_t*>(p.level.data());
   a.density = p.density.data();
   a.lambda = lambda.data();
   a.lambda_step = lambda_step.data();

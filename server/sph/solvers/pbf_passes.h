@@ -42,7 +42,7 @@ struct PbfArrays {
   std::size_t n = 0;
   const float* mass = nullptr;
   const float* support = nullptr;
-  const std::uint8_t* class_index = nullptr;  // SizeClass as 0 / 1
+  const std::uint8_t* class_index = nullptr;  // Level as 0 / 1
   float* position = nullptr;                  // predicted positions; the correction pass writes position_next
   float* position_next = nullptr;
   float* density = nullptr;      // rho_i of the last lambda pass
@@ -69,13 +69,13 @@ struct PbfArrays {
 struct PbfConstants {
   PairKernels kernels;
   float rest_density = 0.0f;
-  std::array<float, kSizeClassCount> relaxation{};         // eps, absolute
-  std::array<float, kSizeClassCount> lambda_scale{};       // l_c: lambda of a full neighbourhood at C = 1
-  std::array<float, kSizeClassCount> tensile_reference{};  // W(dq h) per class
+  std::array<float, kMaxLevels> relaxation{};         // eps, absolute
+  std::array<float, kMaxLevels> lambda_scale{};       // l_c: lambda of a full neighbourhood at C = 1
+  std::array<float, kMaxLevels> tensile_reference{};  // W(dq h) per class
   float tensile_k = 0.0f;
   float omega = 1.0f;
   int tensile_n = 4;
-  std::array<WallReach, kSizeClassCount> contact{};  // nearest a centre may come to the walls
+  std::array<WallReach, kMaxLevels> contact{};  // nearest a centre may come to the walls
   const BoundaryVolume* boundary = nullptr;
   const Boundary* obstacles = nullptr;
   BoxState box;

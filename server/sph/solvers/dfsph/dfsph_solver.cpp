@@ -199,7 +199,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
   a.n = n;
   a.mass = p.mass.data();
   a.support = p.support.data();
-  a.class_index = reinterpret_cast<const std::uint8_t*>(p.size_class.data());
+  a.class_index = reinterpret_cast<const std::uint8_t*>(p.level.data());
   a.position = p.position.data()->data();
   a.density = p.density.data();
   a.inverse_diagonal = inverse_diagonal_.data();
@@ -240,8 +240,7 @@ void DfsphSolver::substep(const FrameContext& frame, double t0, float dt, bool l
 #pragma omp parallel for schedule(static) reduction(+ : error)
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 x = p.position[i] + dt * p.velocity[i];
-    collideBoundary(frame.scene.boundary, constants_.box, setup_.contact[classIndex(p.size_class[i])], x,
-                    p.velocity[i]);
+    collideBoundary(frame.scene.boundary, constants_.box, setup_.contact[levelIndex(p.level[i])], x, p.velocity[i]);
     p.position[i] = x;
     p.pressure[i] = p.kappa[i] * p.density[i] * p.density[i];  // k = p / rho^2
     p.volume[i] = p.mass[i] / p.density[i];

@@ -131,7 +131,7 @@ void PbfSolver::substep(const FrameContext& frame, double t0, float dt, bool fir
     p.velocity[i] += dt * gravity;
     Vec3 x = p.position[i] + dt * p.velocity[i];
     Vec3 unused_velocity = Vec3::Zero();
-    collideBoundary(frame.scene.boundary, constants_.box, constants_.contact[classIndex(p.size_class[i])], x,
+    collideBoundary(frame.scene.boundary, constants_.box, constants_.contact[levelIndex(p.level[i])], x,
                     unused_velocity);
     p.position[i] = x;
   }

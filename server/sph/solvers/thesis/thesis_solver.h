@@ -17,8 +17,8 @@ class ThesisSolver : public FluidSolver {
   // first frame shows the water's own (the first step computes them again).
   void settleFreshWater(const FrameContext& frame) override;
   double fillInset(double spacing, double radius) const override;
-  // The thesis's stages know its two classes only (SMALL and LARGE, (3.35)).
-  int sizeLevels() const override { return kThesisClassCount; }
+  // The thesis's stages know its two classes only (L0 and L1, (3.35)).
+  int sizeLevels() const override { return kThesisLevels; }
 
  private:
   KernelTable kernels_;

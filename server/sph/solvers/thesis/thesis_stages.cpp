@@ -12,9 +12,9 @@
 namespace sph {
 
 KernelTable makeKernelTable(const SimParams& params) {
-  const auto classes = params.classes();
+  const auto classes = params.levelProps();
   KernelTable table;
-  for (int c = 0; c < kSizeClassCount; ++c) table[c] = KernelConstants::forSupport(classes[c].support);
+  for (int c = 0; c < kMaxLevels; ++c) table[c] = KernelConstants::forSupport(classes[c].support);
   return table;
 }
 
@@ -43,14 +43,14 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
-    const KernelConstants& ki = kernels[classIndex(p.size_class[i])];
+    const KernelConstants& ki = kernels[levelIndex(p.level[i])];
     const Vec3 xi = p.position[i];
     float rho = p.mass[i] * poly6(ki, 0.0f);  // the particle's own contribution (j = i)
     for (std::uint32_t j : grid.neighbors(i)) {
       const float r2 = (xi - p.position[j]).squaredNorm();
       float w = poly6(ki, r2);
-      if (p.size_class[j] != p.size_class[i]) {
-        w = 0.5f * (w + poly6(kernels[classIndex(p.size_class[j])], r2));  // eq. (3.35)
+      if (p.level[j] != p.level[i]) {
+        w = 0.5f * (w + poly6(kernels[levelIndex(p.level[j])], r2));  // eq. (3.35)
       }
       rho += p.mass[j] * w;  // eq. (3.11)
     }
@@ -65,8 +65,8 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
 
 #pragma omp parallel for schedule(dynamic, kPairLoopChunk)
   for (std::size_t i = 0; i < n; ++i) {
-    const SizeClass ci = p.size_class[i];
-    const KernelConstants& ki = kernels[classIndex(ci)];
+    const Level ci = p.level[i];
+    const KernelConstants& ki = kernels[levelIndex(ci)];
     const Vec3 xi = p.position[i];
     const Vec3 ui = p.velocity[i];
     const float pi_over_rho2 = p.pressure_term[i];
@@ -87,9 +87,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
       float visc = viscosityLaplacian(ki, rl);
       float cgrad = poly6GradFactor(ki, r2);
       float clap = poly6Laplacian(ki, r2);
-      if (p.size_class[j] != ci) {
+      if (p.level[j] != ci) {
         // Averaged kernels, eq. (3.35): the pair sees the same kernel from both sides.
-        const KernelConstants& kj = kernels[classIndex(p.size_class[j])];
+        const KernelConstants& kj = kernels[levelIndex(p.level[j])];
         spiky = 0.5f * (spiky + spikyGradFactor(kj, rl, inv_r));
         visc = 0.5f * (visc + viscosityLaplacian(kj, rl));
         cgrad = 0.5f * (cgrad + poly6GradFactor(kj, r2));

@@ -14,7 +14,7 @@
 
 namespace sph {
 
-using KernelTable = std::array<KernelConstants, kSizeClassCount>;
+using KernelTable = std::array<KernelConstants, kMaxLevels>;
 
 KernelTable makeKernelTable(const SimParams& params);
 

@@ -131,7 +131,7 @@ class SizeClassLanes {
     // The attribute whose value tells the classes apart: the mass when their masses differ (the
     // loops gather it anyway, so spotting a mixed pair costs no extra gather), else the support
     // radius. Every particle of a class carries the class's mass and support.
-    const auto classes = params.classes();
+    const auto classes = params.levelProps();
     const bool masses_differ = static_cast<float>(classes[0].mass) != static_cast<float>(classes[1].mass);
     key_ = masses_differ ? p.mass.data() : p.support.data();
   }
@@ -149,7 +149,7 @@ class SizeClassLanes {
   }
 
  private:
-  LaneKernel lanes_[kSizeClassCount];
+  LaneKernel lanes_[kMaxLevels];
   const float* mass_;
   const float* key_;
 };
@@ -248,7 +248,7 @@ class DensityStage {
         stiffness_(static_cast<float>(params.gas_stiffness)) {}
 
   [[gnu::always_inline]] Owner owner(std::size_t i) const {
-    const int ci = classIndex(p_.size_class[i]);
+    const int ci = levelIndex(p_.level[i]);
     return {LaneCentre(pos_, i), classes_.keyOf(i), {&classes_.own(ci), &classes_.other(ci)}};
   }
   [[gnu::always_inline]] Owner blend(BatchLanes lanes, const Owner& a, const Owner& b) {
@@ -271,7 +271,7 @@ class DensityStage {
   }
 
   [[gnu::always_inline]] void finish(std::size_t i) {
-    const int ci = classIndex(p_.size_class[i]);
+    const int ci = levelIndex(p_.level[i]);
     storeDensity(p_, i, p_.mass[i] * sph::poly6(kernels_[ci], 0.0f) + _mm512_reduce_add_ps(sum_), stiffness_, rho0_);
     sum_ = _mm512_setzero_ps();
   }
@@ -314,7 +314,7 @@ class ForceStage {
   }
 
   [[gnu::always_inline]] Owner owner(std::size_t i) const {
-    const int ci = classIndex(p_.size_class[i]);
+    const int ci = levelIndex(p_.level[i]);
     return {LaneCentre(pos_, i),
             _mm512_set1_ps(vel_[3 * i]),
             _mm512_set1_ps(vel_[3 * i + 1]),
@@ -378,7 +378,7 @@ class ForceStage {
   }
 
   [[gnu::always_inline]] void finish(std::size_t i) {
-    const int ci = classIndex(p_.size_class[i]);
+    const int ci = levelIndex(p_.level[i]);
     ForceSums sums;
     sums.pressure_acc =
         contact_ - Vec3(_mm512_reduce_add_ps(pax_), _mm512_reduce_add_ps(pay_), _mm512_reduce_add_ps(paz_));
