@@ -203,7 +203,7 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
   std::ofstream out = openOut(path);
   const std::size_t n = p.size();
   if (format == SnapshotFormat::Csv) {
-    out << "id,x,y,z,vx,vy,vz,density,pressure,mass,radius,size_class\n";
+    out << "id,x,y,z,vx,vy,vz,density,pressure,mass,radius,level\n";
     for (std::size_t i = 0; i < n; ++i) {
       const auto& x = p.position[i];
       const auto& u = p.velocity[i];
@@ -234,7 +234,7 @@ void writeSnapshot(const sph::ParticleSet& p, SnapshotFormat format, const std::
   scalars("pressure", p.pressure);
   scalars("mass", p.mass);
   scalars("radius", p.radius);
-  out << "SCALARS size_class int 1\nLOOKUP_TABLE default\n";  // 0 L0, 1 L1
+  out << "SCALARS level int 1\nLOOKUP_TABLE default\n";  // 0 for L0, the finest
   for (std::size_t i = 0; i < n; ++i) out << static_cast<int>(p.level[i]) << '\n';
   out << "SCALARS id unsigned_int 1\nLOOKUP_TABLE default\n";
   for (std::size_t i = 0; i < n; ++i) out << p.id[i] << '\n';

@@ -86,9 +86,9 @@ void writeVtu(const sph::ParticleSet& p, double time, const std::string& path) {
   const std::uint64_t o_pressure = data.add(p.pressure);
   const std::uint64_t o_mass = data.add(p.mass);
   const std::uint64_t o_radius = data.add(p.radius);
-  std::vector<std::uint8_t> size_class(n);
-  for (std::size_t i = 0; i < n; ++i) size_class[i] = static_cast<std::uint8_t>(p.level[i]);
-  const std::uint64_t o_class = data.add(size_class);
+  std::vector<std::uint8_t> level(n);
+  for (std::size_t i = 0; i < n; ++i) level[i] = static_cast<std::uint8_t>(p.level[i]);
+  const std::uint64_t o_level = data.add(level);
   const std::uint64_t o_id = data.add(p.id);
 
   std::ofstream out(path, std::ios::binary);
@@ -107,7 +107,7 @@ void writeVtu(const sph::ParticleSet& p, double time, const std::string& path) {
       << "<PointData Scalars=\"density\" Vectors=\"velocity\">\n"
       << dataArray("Float32", "velocity", 3, o_velocity) << dataArray("Float32", "density", 1, o_density)
       << dataArray("Float32", "pressure", 1, o_pressure) << dataArray("Float32", "mass", 1, o_mass)
-      << dataArray("Float32", "radius", 1, o_radius) << dataArray("UInt8", "size_class", 1, o_class)
+      << dataArray("Float32", "radius", 1, o_radius) << dataArray("UInt8", "level", 1, o_level)
       << dataArray("UInt32", "id", 1, o_id) << "</PointData>\n"
       << "</Piece>\n</UnstructuredGrid>\n"
       << "<AppendedData encoding=\"raw\">\n_";

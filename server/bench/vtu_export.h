@@ -12,7 +12,7 @@
 namespace bench {
 
 // One .vtu: points = positions, one vertex cell per particle, point data velocity, density,
-// pressure, mass, radius, size_class (0 L0, 1 L1), id; `time` in the file's field data.
+// pressure, mass, radius, level (0 for L0, the finest), id; `time` in the file's field data.
 void writeVtu(const sph::ParticleSet& particles, double time, const std::string& path);
 
 // The .pvd index of a run's snapshots. write() rewrites the whole file each time, so the index is

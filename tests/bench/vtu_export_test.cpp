@@ -82,7 +82,7 @@ TEST(VtuExport, ArraysReadBackAsWritten) {
   EXPECT_EQ(values<float>(arrayBytes(file, "pressure")), p.pressure);
   EXPECT_EQ(values<float>(arrayBytes(file, "mass")), p.mass);
   EXPECT_EQ(values<float>(arrayBytes(file, "radius")), p.radius);
-  EXPECT_EQ(values<std::uint8_t>(arrayBytes(file, "size_class")), (std::vector<std::uint8_t>{0, 1, 0}));
+  EXPECT_EQ(values<std::uint8_t>(arrayBytes(file, "level")), (std::vector<std::uint8_t>{0, 1, 0}));
   EXPECT_EQ(values<std::uint32_t>(arrayBytes(file, "id")), p.id);
   // One vertex cell per particle, so ParaView shows the points without a Glyph filter.
   EXPECT_EQ(values<std::int32_t>(arrayBytes(file, "connectivity")), (std::vector<std::int32_t>{0, 1, 2}));
@@ -154,8 +154,8 @@ TEST(SnapshotFormats, AllThreeCarryTheSameFieldsAndTheClassAsANumber) {
   bench::writeVtu(p, 0.0, vtu);
   bench::writeSnapshot(p, bench::SnapshotFormat::Vtk, vtk);
   bench::writeSnapshot(p, bench::SnapshotFormat::Csv, csv);
-  const std::set<std::string> expected = {"position", "velocity", "density",    "pressure",
-                                          "mass",     "radius",   "size_class", "id"};
+  const std::set<std::string> expected = {"position", "velocity", "density", "pressure",
+                                          "mass",     "radius",   "level",   "id"};
   EXPECT_EQ(fieldsOf(vtu, bench::SnapshotFormat::Vtu), expected);
   EXPECT_EQ(fieldsOf(vtk, bench::SnapshotFormat::Vtk), expected);
   EXPECT_EQ(fieldsOf(csv, bench::SnapshotFormat::Csv), expected);

@@ -15,7 +15,7 @@
 
 namespace {
 
-// A box `cells` spacings square and 1 m high, with `layers` layers of `size_class` particles on
+// A box `cells` spacings square and 1 m high, with `layers` layers of `level` particles on
 // a cubic lattice at rest density (the spacing cbrt(m / rho0)), squeezed vertically by `squeeze`.
 struct Pool {
   sph::Scene scene;  // the pbf preset's parameters, the box as its boundary
@@ -27,12 +27,12 @@ struct Pool {
   bench::WaterLevel level() const { return bench::measureWaterLevel(particles, scene, box); }
 };
 
-Pool latticePool(sph::Level size_class, int cells, int layers, double squeeze = 1.0) {
+Pool latticePool(sph::Level level, int cells, int layers, double squeeze = 1.0) {
   Pool pool;
   sph::SimParams& params = pool.scene.params;
   EXPECT_TRUE(sph::presetByName("pbf", params));
   pool.rest_density = params.rest_density;
-  const sph::LevelProps props = params.levelProps()[sph::levelIndex(size_class)];
+  const sph::LevelProps props = params.levelProps()[sph::levelIndex(level)];
   pool.spacing = std::cbrt(props.mass / params.rest_density);
   const double side = cells * pool.spacing;
   pool.scene.boundary.box.max = Eigen::Vector3d(side, 1.0, side);
@@ -43,7 +43,7 @@ Pool latticePool(sph::Level size_class, int cells, int layers, double squeeze = 
         const sph::Vec3 at(static_cast<float>((x + 0.5) * pool.spacing),
                            static_cast<float>((y + 0.5) * pool.spacing * squeeze),
                            static_cast<float>((z + 0.5) * pool.spacing));
-        pool.particles.add(at, sph::Vec3::Zero(), size_class, props);
+        pool.particles.add(at, sph::Vec3::Zero(), level, props);
       }
     }
   }
