@@ -45,8 +45,8 @@ std::string cell(const std::string& text) {
 constexpr const char* kCharacter = "surface, hybrid, gaze";
 constexpr const char* kGazed = "gaze, hybrid, foveated";
 
-// Every setting, the simulation parameters first. Ranges: min, max, whether min and max themselves
-// are excluded.
+// Every setting, the simulation parameters first; registerParameter adds to it. Ranges: min, max,
+// whether min and max themselves are excluded.
 std::vector<ParamSpec>& rows() {
   using A = AdaptiveConfig;
   static std::vector<ParamSpec> table = {
@@ -169,6 +169,24 @@ const ParamSpec* findParameter(const std::string& name) {
   return nullptr;
 }
 
+void registerParameter(const ParamSpec& spec) {
+  for (const char* name : {spec.key, spec.alias}) {
+    if (name != nullptr && findParameter(name) != nullptr) {
+      throw std::invalid_argument(std::string("a setting called '") + name + "' exists already");
+    }
+  }
+  rows().push_back(spec);
+}
+
+bool unregisterParameter(const std::string& key) {
+  std::vector<ParamSpec>& table = rows();
+  const auto it = std::find_if(table.begin(), table.end(), [&](const ParamSpec& s) { return key == s.key; });
+  if (it == table.end()) return false;
+  table.erase(it);
+  return true;
+}
+
+// ParamField lists SimParams's three alternatives before AdaptiveConfig's.
 bool ParamSpec::isAdaptive() const { return field.index() >= 3; }
 
 bool ParamSpec::isReal() const {

@@ -57,6 +57,13 @@ const std::vector<ParamSpec>& parameterTable();
 // By key or alias; nullptr when no setting is called `name`.
 const ParamSpec* findParameter(const std::string& name);
 
+// Adds a row (a test's setting) to the table; throws std::invalid_argument when its key or alias
+// names a setting already. Not thread-safe, and it may move the rows: register before anything
+// reads the table.
+void registerParameter(const ParamSpec& spec);
+// Removes the row a registerParameter call added; false when there is none called `key`.
+bool unregisterParameter(const std::string& key);
+
 // Throws std::invalid_argument "parameter 'KEY' must be ..." for the first field of `config` that
 // is outside its row's range (AdaptiveConfig::validate's first check).
 void checkRanges(const AdaptiveConfig& config);

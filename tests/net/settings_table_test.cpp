@@ -1,5 +1,5 @@
 // set_parameters reads the settings table (sph/param_table.h): simulation parameters and adaptive
-// settings by one check and one wording.
+// settings by one check and one wording, and a row a test adds is a setting a client can set.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -7,6 +7,7 @@
 
 #include "app/control_executor.h"
 #include "app/sim_session.h"
+#include "support/test_setting.h"
 
 namespace {
 
@@ -42,6 +43,19 @@ TEST(SettingsTable, SetParametersChecksAdaptiveSettingsByTheTable) {
   EXPECT_EQ(s.session.config().gaze_radius, sph::AdaptiveConfig{}.gaze_radius) << "a refused request changed a value";
   r = s.set({{"no_such_setting", 1.0}});
   EXPECT_NE(r.error().find("unknown parameter 'no_such_setting'"), std::string::npos) << r.error();
+}
+
+// Adding a setting is one row: set_parameters and the status read a row registered by a test.
+TEST(SettingsTable, ASettingAddedToTheTableIsSetByAClient) {
+  const sph_test::ScopedSetting added(sph_test::testOnlySetting());
+  Session s;
+  gsph::v1::ControlReply r = s.set({{"test_only_hold_s", 2.0}});
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(s.session.config().foveated_merge_hold_s, 2.0);
+  EXPECT_EQ(r.status().parameters().at("test_only_hold_s"), 2.0);
+  r = s.set({{"test_only_hold_s", 6.0}});
+  EXPECT_EQ(r.error(), "parameter 'test_only_hold_s' must be a number in [0, 5]");
+  EXPECT_EQ(s.session.config().foveated_merge_hold_s, 2.0);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "sph/params.h"
 #include "sph/particles.h"
 #include "sph/solvers/fluid_solver_factory.h"
+#include "support/test_setting.h"
 
 namespace {
 
@@ -266,6 +267,15 @@ TEST(SceneLoader, AdaptiveSettingsTakeTheirTypeAndFormerNames) {
       scene::parseScene(withKey(R"("adaptive": {"foveated_thin_level": 2, "gaze_ring": 0.12})"), "test.json");
   EXPECT_EQ(s.adaptive.foveated_thin_level, 2);
   EXPECT_DOUBLE_EQ(s.adaptive.gaze_ring_radius, 0.12);
+}
+
+// Adding a setting is one row of the settings table: the loader reads a row registered by a test.
+TEST(SceneLoader, ASettingAddedToTheTableIsRead) {
+  const sph_test::ScopedSetting added(sph_test::testOnlySetting());
+  const sph::Scene s = scene::parseScene(withKey(R"("adaptive": {"test_only_hold_s": 2.5})"), "test.json");
+  EXPECT_DOUBLE_EQ(s.adaptive.foveated_merge_hold_s, 2.5);
+  const std::string e = errorOf(withKey(R"("adaptive": {"test_only_hold_s": 6})"));
+  EXPECT_NE(e.find("key 'adaptive.test_only_hold_s': must be a number in [0, 5]"), std::string::npos) << e;
 }
 
 TEST(SceneLoader, ShippedScenesNameAGazeRecordingThatExists) {

@@ -1,6 +1,7 @@
 // The settings table (sph/param_table.h) is the one place a setting is declared, simulation
 // parameter or adaptive setting: the docs' tables are generated from it, and its checks are what
-// the scene loader, both validates and the command line apply.
+// the scene loader, both validates and the command line apply; a row registered at run time is
+// read like the built-in ones.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "sph/param_table.h"
+#include "support/test_setting.h"
 
 namespace {
 
@@ -140,6 +142,31 @@ TEST(ParamTable, CommandLineSettingsReadByKeyOrAlias) {
   }
   EXPECT_FALSE(sph::parseParameterSetting("alpha=-1", out, error));
   EXPECT_EQ(error, "alpha must be a number in [0, 1000000]");
+}
+
+// Adding a setting is one row: a row registered here is found, checked, listed in --help and the
+// docs' table, and sets its field (tests/scene and tests/net: the loader and set_parameters too).
+TEST(ParamTable, ARegisteredRowIsASettingEverywhere) {
+  {
+    const sph_test::ScopedSetting added(sph_test::testOnlySetting());
+    EXPECT_THROW(sph::registerParameter(sph_test::testOnlySetting()), std::invalid_argument);
+    ASSERT_NE(sph::findParameter("test_only_hold_s"), nullptr);
+    EXPECT_NE(sph::parameterHelpText(true).find("test_only_hold_s"), std::string::npos);
+    EXPECT_EQ(sph::parameterHelpText(false).find("test_only_hold_s"), std::string::npos);
+    EXPECT_NE(sph::parameterTableMarkdown().find("| `test_only_hold_s` | foveated | a number in [0, 5] | s | 0 |"),
+              std::string::npos);
+    std::map<std::string, double> out;
+    std::string error;
+    EXPECT_TRUE(sph::parseParameterSetting("test_only_hold_s=2", out, error)) << error;
+    EXPECT_FALSE(sph::parseParameterSetting("test_only_hold_s=6", out, error));
+    EXPECT_EQ(error, "test_only_hold_s must be a number in [0, 5]");
+    EXPECT_EQ(sph::withAdaptiveSettings(sph::AdaptiveConfig{}, out).foveated_merge_hold_s, 2.0);
+    sph::AdaptiveConfig c;
+    c.foveated_merge_hold_s = 6.0;  // in foveated_merge_hold_s's own range, outside the test row's
+    EXPECT_THROW(c.validate(), std::invalid_argument);
+  }
+  EXPECT_EQ(sph::findParameter("test_only_hold_s"), nullptr);
+  EXPECT_FALSE(sph::unregisterParameter("test_only_hold_s"));
 }
 
 }  // namespace
