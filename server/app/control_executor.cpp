@@ -8,7 +8,6 @@
 #include <map>
 #include <string>
 
-#include "app/adaptive_parameters.h"
 #include "net/frame_encoder.h"
 #include "net/peer_text.h"
 #include "scene/scene_loader.h"
@@ -35,15 +34,15 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
   std::map<std::string, double> simulation;
   for (const auto& [name, value] : request.values()) {
     if (!std::isfinite(value)) return "parameter '" + net::echoText(name) + "' is not finite";
-    bool adaptive = false;
-    const std::string error = setAdaptiveParameter(config, name, value, adaptive);
-    if (const sph::ParamSpec* spec = sph::findParameter(name); spec != nullptr && !adaptive) {
+    if (const sph::ParamSpec* spec = sph::findParameter(name); spec != nullptr) {
       if (const std::string why = spec->check(value); !why.empty()) {
         return std::string("parameter '") + spec->key + "' " + (spec->isFlag() ? "must be 0 or 1" : why);
       }
-      simulation[name] = value;
-    } else if (adaptive) {
-      if (!error.empty()) return error;
+      if (spec->isAdaptive()) {
+        spec->set(config, value);
+      } else {
+        simulation[spec->key] = value;
+      }
     } else if (name == "publish_hz") {
       if (std::string e = publishHzError(value); !e.empty()) return e;
       settings.publish_hz = value;
@@ -52,7 +51,8 @@ std::string applyParameters(const gsph::v1::SetParametersRequest& request, Contr
     } else if (name == "free_run") {
       if (!asBool(value, settings.free_run)) return name + " must be 0 or 1";
     } else {
-      return error + "; or a simulation parameter (sph_bench --parameter-table lists them)";
+      return "unknown parameter '" + net::echoText(name) +
+             "': neither a setting (sph_bench --parameter-table lists them) nor publish_hz, quantized or free_run";
     }
   }
   try {
@@ -111,13 +111,12 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
     spdlog::debug("cannot list scenes: {}", e.what());
   }
   auto& params = *status.mutable_parameters();
-  std::map<std::string, double> adaptive;
-  adaptiveParameters(s.config(), adaptive);
-  for (const auto& [name, value] : adaptive) params[name] = value;
   params["publish_hz"] = target.settings.publish_hz;
   params["quantized"] = target.settings.quantized ? 1.0 : 0.0;
   params["free_run"] = target.settings.free_run ? 1.0 : 0.0;
-  for (const sph::ParamSpec& spec : sph::parameterTable()) params[spec.key] = spec.get(s.scene().params);
+  for (const sph::ParamSpec& spec : sph::parameterTable()) {
+    params[spec.key] = spec.isAdaptive() ? spec.get(s.config()) : spec.get(s.scene().params);
+  }
   if (target.fill_counters) target.fill_counters(status);
 }
 

@@ -11,7 +11,6 @@
 #include <utility>
 #include <vector>
 
-#include "app/adaptive_parameters.h"
 #include "app/server.h"
 #include "cli/cli_conventions.h"
 #include "net/curve_cli.h"
@@ -28,7 +27,7 @@ struct CliOptions {
   std::string method;                  // empty: the scene's default method
   std::string realtime = "on";         // --realtime on|off
   std::map<std::string, double> gaze;  // --gaze-* options given
-  std::vector<std::string> adaptive;   // --adaptive name=value
+  std::vector<std::string> adaptive;   // --adaptive key=value
   std::vector<std::string> params;     // --param key=value
   int levels = 0;                      // --levels N: --param levels=N
   std::string gaze_socket = "sub";
@@ -106,23 +105,21 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.option_defaults()->group("Gaze and adaptivity");
   cli.add_option("--camera-source", sim.camera_source,
                  "viewer_id whose camera pose drives the gaze projection (default: the most recent pose)");
-  // Adaptive settings override the scene's "adaptive" block (defaults shown are the library's).
+  // Adaptive settings override the scene's "adaptive" block (defaults shown are the library's); the
+  // settings table gives each --gaze-* option its help.
   const sph::AdaptiveConfig defaults;
-  const auto gaze_option = [&](const char* flag, const char* name, double fallback, const char* help) {
+  const auto gaze_option = [&](const char* flag, const char* key) {
+    const sph::ParamSpec& spec = *sph::findParameter(key);
     cli.add_option_function<double>(
-           flag, [&o, name](double v) { o.gaze[name] = v; }, help)
-        ->default_str(std::to_string(fallback));
+           flag, [&o, key](double v) { o.gaze[key] = v; }, fmt::format("{} ({})", spec.description, spec.unit))
+        ->default_str(fmt::format("{}", spec.get(defaults)));
   };
-  gaze_option("--gaze-radius", "gaze_radius", defaults.gaze_radius, "gaze circle radius, fraction of viewport width");
-  gaze_option("--gaze-ring-radius", "gaze_ring_radius", defaults.gaze_ring_radius,
-              "outer radius of the hysteresis ring, same units");
-  gaze_option("--gaze-stale-s", "gaze_stale_s", defaults.gaze_stale_s,
-              "sample age (s) after which the last gaze point is held");
-  gaze_option("--gaze-hold-s", "gaze_hold_s", defaults.gaze_hold_s,
-              "sample age (s) after which surface refinement takes over");
+  gaze_option("--gaze-radius", "gaze_radius");
+  gaze_option("--gaze-ring-radius", "gaze_ring_radius");
+  gaze_option("--gaze-stale-s", "gaze_stale_s");
+  gaze_option("--gaze-hold-s", "gaze_hold_s");
   cli.add_option("--adaptive", o.adaptive,
-                 "NAME=VALUE, any adaptive setting (alpha, beta, gamma, threshold, surface_normal_scale, "
-                 "surface_includes_walls, gaze_*, foveated_*); repeatable");
+                 "KEY=VALUE, an adaptive setting over the scene file's (listed below); repeatable");
   cli.option_defaults()->group("Scene and physics");
   cli.add_option("--levels", o.levels,
                  "size levels (the parameter 'levels': L0 the finest to L(N - 1)); the same as --param levels=N")
@@ -133,7 +130,10 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.footer(
       "Simulation parameters (--param KEY=VALUE, set_parameters; defaults by preset: sph_bench "
       "--parameter-table):\n" +
-      sph::parameterHelpText() + "\n" + cli.get_footer());
+      sph::parameterHelpText(false) +
+      "\nAdaptive settings (--adaptive KEY=VALUE, set_parameters; a scene file's \"adaptive\"; defaults: sph_bench "
+      "--parameter-table):\n" +
+      sph::parameterHelpText(true) + "\n" + cli.get_footer());
   cli.option_defaults()->group("Security");
   curve::addServerOptions(cli, o.curve);
   cli.option_defaults()->group("Network");
@@ -169,18 +169,22 @@ int main(int argc, char** argv) {
     sph::methodByName(o.method, m);  // checked by CLI11
     o.server.sim.method = m;
   }
-  o.server.sim.adaptive_overrides = o.gaze;
-  for (const std::string& setting : o.adaptive) {
-    std::string error;
-    if (!app::parseAdaptiveSetting(setting, o.server.sim.adaptive_overrides, error)) {
-      return cli::usageError(cli, "--adaptive " + setting + ": " + error);
+  // Either option takes any setting of the table; where it goes is the table's.
+  std::map<std::string, double> settings = o.gaze;
+  if (o.levels != 0) settings["levels"] = o.levels;
+  for (const auto& [option, given] : {std::pair{"--adaptive", &o.adaptive}, std::pair{"--param", &o.params}}) {
+    for (const std::string& setting : *given) {
+      std::string error;
+      if (!sph::parseParameterSetting(setting, settings, error)) {
+        return cli::usageError(cli, std::string(option) + " " + setting + ": " + error);
+      }
     }
   }
-  if (o.levels != 0) o.params.insert(o.params.begin(), "levels=" + std::to_string(o.levels));
-  for (const std::string& setting : o.params) {
-    std::string error;
-    if (!sph::parseParameterSetting(setting, o.server.sim.sim_parameters, error)) {
-      return cli::usageError(cli, "--param " + setting + ": " + error);
+  for (const auto& [key, value] : settings) {
+    if (sph::findParameter(key)->isAdaptive()) {
+      o.server.sim.adaptive_overrides[key] = value;
+    } else {
+      o.server.sim.sim_parameters[key] = value;
     }
   }
   net::inputSocketTypeByName(o.gaze_socket, o.server.net.gaze_type);

@@ -35,7 +35,7 @@ struct SimLoopOptions {
   // ends (a stop signal or max_steps). Empty: neither.
   std::string load_state;
   std::string save_state;
-  // Adaptive settings by name (adaptive_parameters.h) over each scene's own "adaptive" block.
+  // Adaptive settings by key (sph/param_table.h) over each scene's own "adaptive" block.
   std::map<std::string, double> adaptive_overrides;
   // Simulation parameters by key over every loaded scene's (--param; SimSession::useSimParameters).
   std::map<std::string, double> sim_parameters;

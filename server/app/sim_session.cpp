@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "app/adaptive_parameters.h"
 #include "net/peer_text.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_method.h"
@@ -34,7 +33,9 @@ void addSimParameters(const std::map<std::string, double>& values, std::map<std:
                       sph::SimParams& params) {
   for (const auto& [name, value] : values) {
     const sph::ParamSpec* spec = sph::findParameter(name);
-    if (spec == nullptr) throw std::invalid_argument("unknown simulation parameter '" + net::echoText(name) + "'");
+    if (spec == nullptr || spec->isAdaptive()) {
+      throw std::invalid_argument("unknown simulation parameter '" + net::echoText(name) + "'");
+    }
     if (const std::string why = spec->check(value); !why.empty()) {
       throw std::invalid_argument(std::string("parameter '") + spec->key + "' " + why);
     }
@@ -60,7 +61,7 @@ void SimSession::load(const std::string& scene_name, std::optional<sph::Method> 
   // A method the caller names is refused where the solver lacks its levels; the scene's own gives
   // way to gaze there.
   const sph::Method chosen = method ? *method : scene::ownMethod(scene);
-  start(scene, chosen, withOverrides(scene.adaptive, overrides_));
+  start(scene, chosen, sph::withAdaptiveSettings(scene.adaptive, overrides_));
   scene_name_ = scene_name;
   scene_allow_paths_ = allow_paths;
 }

@@ -23,7 +23,7 @@ using BeforeAdaptiveStep = std::function<void(sph::AdaptiveController&)>;
 
 class SimSession {
  public:
-  // `overrides`: adaptive settings by name (adaptive_parameters.h) that replace the scene's own
+  // `overrides`: adaptive settings by key (sph/param_table.h) that replace the scene's own
   // "adaptive" values whenever a scene is loaded (the command line's --gaze-radius and friends).
   SimSession(std::string scene_dir, std::map<std::string, double> overrides, BeforeAdaptiveStep before);
 

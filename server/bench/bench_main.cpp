@@ -85,9 +85,11 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
       ->capture_default_str();
   bool parameter_table = false;
   app.add_flag("--parameter-table", parameter_table,
-               "print every simulation parameter with its default in each preset (Markdown) and exit");
-  app.footer("Simulation parameters (a scene file's \"params\"; sph_server --param):\n" + sph::parameterHelpText() +
-             "\n" + app.get_footer());
+               "print every setting with its default (in each preset) as Markdown, and exit");
+  app.footer("Simulation parameters (a scene file's \"params\"; sph_server --param):\n" +
+             sph::parameterHelpText(false) +
+             "\nAdaptive settings (a scene file's \"adaptive\"; sph_server --adaptive):\n" +
+             sph::parameterHelpText(true) + "\n" + app.get_footer());
   if (auto code = cli::parse(app, argc, argv)) return code;
   if (parameter_table) {
     std::fputs(sph::parameterTableMarkdown().c_str(), stdout);

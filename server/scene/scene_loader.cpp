@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 #include <spdlog/spdlog.h>
 
@@ -90,28 +91,36 @@ struct Context {
   }
 };
 
-// Every key of "params" by the parameter table (sph/param_table.h): its type, then its range.
-void readParams(const Context& ctx, const json& params, sph::SimParams& p) {
-  if (!params.is_object()) ctx.fail("params", "must be an object");
-  for (const auto& [name, value] : params.items()) {
-    const std::string key = "params." + name;
+// Every key of `section` ("params" or "adaptive") by the settings table (sph/param_table.h): its
+// type, then its range, onto `holder` (SimParams or AdaptiveConfig).
+template <class Holder>
+void readSettings(const Context& ctx, const std::string& section, const json& values, Holder& holder) {
+  constexpr bool adaptive = std::is_same_v<Holder, sph::AdaptiveConfig>;
+  if (!values.is_object()) ctx.fail(section, "must be an object");
+  for (const auto& [name, value] : values.items()) {
+    const std::string key = section + "." + name;
     const sph::ParamSpec* spec = sph::findParameter(name);
     if (spec == nullptr) ctx.fail(key, "unknown parameter");
+    if (spec->isAdaptive() != adaptive) {
+      ctx.fail(key, adaptive ? "unknown parameter (a simulation parameter: it belongs in 'params')"
+                             : "unknown parameter (an adaptive setting: it belongs in 'adaptive')");
+    }
     if (name != spec->key) {
-      spdlog::warn("{}: key '{}' is now called 'params.{}' (the old name still works)", ctx.source, key, spec->key);
+      spdlog::warn("{}: key '{}' is now called '{}.{}' (the old name still works)", ctx.source, key, section,
+                   spec->key);
     }
     double number = 0.0;
     if (spec->isFlag()) {
       if (!value.is_boolean()) ctx.fail(key, "must be true or false");
-      number = value.get<bool>() ? 1.0 : 0.0;
+      number = value.template get<bool>() ? 1.0 : 0.0;
     } else if (spec->isInteger()) {
       if (!value.is_number_integer()) ctx.fail(key, "must be " + spec->accepts());
-      number = static_cast<double>(value.get<long long>());
+      number = static_cast<double>(value.template get<long long>());
     } else {
       number = ctx.number(value, key);
     }
     if (const std::string why = spec->check(number); !why.empty()) ctx.fail(key, why);
-    spec->set(p, number);
+    spec->set(holder, number);
   }
 }
 
@@ -146,40 +155,9 @@ void readCamera(const Context& ctx, const json& cam, sph::CameraSpec& c) {
   }
 }
 
-// The "adaptive" object: every AdaptiveConfig field by name, then AdaptiveConfig::validate.
+// The "adaptive" object by the settings table, then what holds between its settings.
 void readAdaptive(const Context& ctx, const json& a, sph::AdaptiveConfig& c) {
-  const std::map<std::string, double*> numbers = {
-      {"alpha", &c.alpha},
-      {"beta", &c.beta},
-      {"gamma", &c.gamma},
-      {"threshold", &c.threshold},
-      {"surface_normal_scale", &c.surface_normal_scale},
-      {"gaze_radius", &c.gaze_radius},
-      {"gaze_ring_radius", &c.gaze_ring_radius},
-      {"gaze_stale_s", &c.gaze_stale_s},
-      {"gaze_hold_s", &c.gaze_hold_s},
-      {"foveated_quality", &c.foveated_quality},
-      {"foveated_periphery_gain", &c.foveated_periphery_gain},
-      {"foveated_mar_w0_deg", &c.foveated_mar_w0_deg},
-      {"foveated_mar_slope", &c.foveated_mar_slope},
-      {"foveated_display_fov_deg", &c.foveated_display_fov_deg},
-      {"foveated_hidden_depth", &c.foveated_hidden_depth},
-      {"foveated_coarsen_margin", &c.foveated_coarsen_margin},
-      {"foveated_thin_fill", &c.foveated_thin_fill},
-      {"foveated_shallow_spread", &c.foveated_shallow_spread},
-      {"foveated_merge_hold_s", &c.foveated_merge_hold_s},
-      {"foveated_thin_level", &c.foveated_thin_level},
-  };
-  std::set<std::string> allowed = {"surface_includes_walls"};
-  for (const auto& [name, field] : numbers) allowed.insert(name);
-  ctx.allowOnly(a, "adaptive", allowed);
-  for (const auto& [name, field] : numbers) {
-    if (a.contains(name)) *field = ctx.number(a[name], "adaptive." + name);
-  }
-  if (a.contains("surface_includes_walls")) {
-    if (!a["surface_includes_walls"].is_boolean()) ctx.fail("adaptive.surface_includes_walls", "must be true or false");
-    c.surface_includes_walls = a["surface_includes_walls"].get<bool>();
-  }
+  readSettings(ctx, "adaptive", a, c);
   try {
     c.validate();
   } catch (const std::invalid_argument& e) {
@@ -278,7 +256,7 @@ sph::Scene parseScene(const std::string& json_text, const std::string& source, c
   }
   // The caller's preset replaces the file's; the file's own "params" still apply on top of it.
   if (!preset.empty()) s.params = preset_params;
-  if (doc.contains("params")) readParams(ctx, doc["params"], s.params);
+  if (doc.contains("params")) readSettings(ctx, "params", doc["params"], s.params);
   try {
     s.params.validate();
   } catch (const std::invalid_argument& e) {

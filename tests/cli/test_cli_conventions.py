@@ -90,8 +90,9 @@ class ServerHelp(unittest.TestCase):
         for group in ("Scene and physics:", "Run and frames:", "Network:", "Gaze and adaptivity:", "Security:",
                       "Logging:"):
             self.assertIn(group, headings)
-        # The simulation parameters come from the parameter table (sph/param_table.h).
+        # The simulation parameters and the adaptive settings come from the settings table (sph/param_table.h).
         self.assertIn("pbf_iterations", r.stdout)
+        self.assertIn("foveated_thin_level", r.stdout)
 
 
 class UsageErrors(unittest.TestCase):
@@ -155,9 +156,11 @@ class UsageErrors(unittest.TestCase):
 
     def test_adaptive_settings(self):
         self.assert_usage_error("sph_server", ["--adaptive", "alpha=x"], "--adaptive", "alpha=x", "number")
-        line = self.assert_usage_error("sph_server", ["--adaptive", "nosuch=1"], "nosuch")
-        for name in ("alpha", "beta", "threshold", "gaze_radius", "surface_includes_walls"):
-            self.assertIn(name, line)
+        self.assert_usage_error("sph_server", ["--adaptive", "nosuch=1"], "unknown setting 'nosuch'", "--help")
+        # One table: either option takes any setting, in the table's wording.
+        self.assert_usage_error("sph_server", ["--adaptive", "foveated_thin_level=1.5"], "foveated_thin_level",
+                                "must be an integer in [0, 7]")
+        self.assert_usage_error("sph_server", ["--param", "gaze_radius=3"], "gaze_radius", "[0, 2]")
 
     def test_options_that_do_not_go_together(self):
         self.assert_usage_error("gaze_bridge", ["--source", "replay"], "--replay")

@@ -10,6 +10,7 @@
 #include "sph/params.h"
 #include "sph/particles.h"
 #include "sph/solvers/fluid_solver_factory.h"
+#include "support/test_setting.h"
 
 namespace {
 
@@ -247,6 +248,34 @@ TEST(SceneLoader, BadMethodAndAdaptiveSettingsAreNamed) {
   EXPECT_NE(e.find("'adaptive.radius'"), std::string::npos) << e;
   e = errorOf(withKey(R"("adaptive": {"surface_includes_walls": 1})"));
   EXPECT_NE(e.find("surface_includes_walls"), std::string::npos) << e;
+  // One wording with the simulation parameters: the key, then what it takes.
+  e = errorOf(withKey(R"("adaptive": {"gaze_radius": 3})"));
+  EXPECT_NE(e.find("key 'adaptive.gaze_radius': must be a number in [0, 2]"), std::string::npos) << e;
+  e = errorOf(withKey(R"("adaptive": {"foveated_thin_level": 1.5})"));
+  EXPECT_NE(e.find("key 'adaptive.foveated_thin_level': must be an integer in [0, 7]"), std::string::npos) << e;
+  // A setting in the other block is named with where it belongs.
+  e = errorOf(withKey(R"("adaptive": {"pbf_omega": 0.5})"));
+  EXPECT_NE(e.find("'adaptive.pbf_omega': unknown parameter (a simulation parameter: it belongs in 'params')"),
+            std::string::npos)
+      << e;
+  e = errorOf(withKey(R"("params": {"alpha": 0.5})"));
+  EXPECT_NE(e.find("'params.alpha': unknown parameter (an adaptive setting"), std::string::npos) << e;
+}
+
+TEST(SceneLoader, AdaptiveSettingsTakeTheirTypeAndFormerNames) {
+  const sph::Scene s =
+      scene::parseScene(withKey(R"("adaptive": {"foveated_thin_level": 2, "gaze_ring": 0.12})"), "test.json");
+  EXPECT_EQ(s.adaptive.foveated_thin_level, 2);
+  EXPECT_DOUBLE_EQ(s.adaptive.gaze_ring_radius, 0.12);
+}
+
+// Adding a setting is one row of the settings table: the loader reads a row registered by a test.
+TEST(SceneLoader, ASettingAddedToTheTableIsRead) {
+  const sph_test::ScopedSetting added(sph_test::testOnlySetting());
+  const sph::Scene s = scene::parseScene(withKey(R"("adaptive": {"test_only_hold_s": 2.5})"), "test.json");
+  EXPECT_DOUBLE_EQ(s.adaptive.foveated_merge_hold_s, 2.5);
+  const std::string e = errorOf(withKey(R"("adaptive": {"test_only_hold_s": 6})"));
+  EXPECT_NE(e.find("key 'adaptive.test_only_hold_s': must be a number in [0, 5]"), std::string::npos) << e;
 }
 
 TEST(SceneLoader, ShippedScenesNameAGazeRecordingThatExists) {

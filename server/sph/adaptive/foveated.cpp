@@ -85,7 +85,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto large_support = static_cast<float>(levels[1].support);
   const auto margin = static_cast<float>(config.foveated_coarsen_margin);
   const auto thin_fill = static_cast<float>(config.foveated_thin_fill);
-  const int thin_level = std::clamp(static_cast<int>(config.foveated_thin_level), 0, coarsest);
+  const int thin_level = std::clamp(config.foveated_thin_level, 0, coarsest);
 
   scratch.allowed.resize(n);
   scratch.budget.resize(n);

@@ -26,6 +26,8 @@ Level coarsestLevel(Method m, int levels);
 // Gaze, hybrid and foveated refine where the eye looks, so they need a gaze source.
 bool usesGaze(Method m);
 
+// Each field is a row of the settings table (sph/param_table.h), which holds its key, range and
+// unit: a new field needs its row there.
 struct AdaptiveConfig {
   // Character field (3.45), table 3.2.
   double alpha = 0.8;        // geometric weight
@@ -75,7 +77,7 @@ struct AdaptiveConfig {
   // front's tip, and stays at most at `foveated_thin_level`, so thin water keeps particles across
   // it.
   double foveated_thin_fill = 0.4;
-  double foveated_thin_level = 1;  // a level (a whole number)
+  int foveated_thin_level = 1;  // a level; the foveated rule clamps it to the run's coarsest
   // A particle whose neighbours spread across their thinnest direction less than this share of
   // their mean spread (1 in water of any depth, 0 in one layer: a sheet spread on the floor)
   // stays at most at the thin level: a layer under a coarse particle's width reads a low density
@@ -87,7 +89,8 @@ struct AdaptiveConfig {
   // finer trail behind the gaze that long (docs/fluids.md, "Foveated water"). 0: at once.
   double foveated_merge_hold_s = 0.0;
 
-  // Throws std::invalid_argument naming the field when a value is not finite or out of range.
+  // Throws std::invalid_argument naming the setting when a value is outside its range in the
+  // settings table (sph/param_table.h) or the settings disagree with each other.
   void validate() const;
 };
 
