@@ -52,6 +52,7 @@ Summary summarize(const RunResult& run) {
     s.levels = r.levels;
     for (std::size_t k = 0; k < r.by_level.size(); ++k) s.mean_levels[k] += static_cast<double>(r.by_level[k]) / n;
     if (r.visible > 0) {
+      s.budget_measured = true;
       s.max_over_budget_share = std::max(s.max_over_budget_share, static_cast<double>(r.over_budget) / r.visible);
     }
     s.mean_neighbors += r.mean_neighbors / n;
@@ -176,7 +177,7 @@ static std::string levelText(const Summary& s) {
     std::snprintf(buf, sizeof buf, "%sL%d %.0f", k == 0 ? "" : ", ", k, s.mean_levels[static_cast<std::size_t>(k)]);
     text += buf;
   }
-  if (s.max_over_budget_share > 0.0 || s.levels > 2) {
+  if (s.budget_measured) {
     std::snprintf(buf, sizeof buf, " (over budget at most %.2f %%)", 100.0 * s.max_over_budget_share);
     text += buf;
   }

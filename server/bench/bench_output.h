@@ -25,6 +25,7 @@ struct Summary {
   double mean_neighbors = 0.0;
   // foveated: the largest share of visible particles over the perceptual budget in any frame.
   double max_over_budget_share = 0.0;
+  bool budget_measured = false;  // some frame counted visible particles (foveated)
   double mean_density_ratio = 0.0, max_density_ratio = 0.0;
   std::size_t nan_values = 0, outside_box = 0;
 };
