@@ -81,7 +81,7 @@ double bestStartupShift(const std::vector<FrontPoint>& simulated, const std::vec
   error = maxRelativeFrontError(simulated, experiment, t_max, 0.0);
   // Steps of a thousandth: the simulated curve is interpolated linearly between frames, so the
   // error is continuous in the shift, and a grid of hundredths missed its minimum
-  // (docs/fluids.md, "Validation").
+  // (docs/validation.md).
   constexpr double kStep = 0.001;
   for (int k = 1; k * kStep <= max_shift + 1e-9; ++k) {
     const double e = maxRelativeFrontError(simulated, experiment, t_max, k * kStep);

@@ -2,7 +2,7 @@
 // file's "params") and the adaptive settings (AdaptiveConfig, its "adaptive"), with key, type,
 // valid range, unit, who reads it and what it does. The scene loader, SimParams::validate,
 // AdaptiveConfig::validate, the programs' --param, --adaptive and --help, the control socket's
-// set_parameters and the tables in docs/fluids.md (parameterTableMarkdown, checked by a test) all
+// set_parameters and the tables in docs/parameters.md (parameterTableMarkdown, checked by a test) all
 // read it; the defaults are the presets' (params.cpp) and AdaptiveConfig's (adaptive/method.h).
 #pragma once
 
@@ -81,7 +81,7 @@ AdaptiveConfig withAdaptiveSettings(AdaptiveConfig config, const std::map<std::s
 std::string parameterHelpText(bool adaptive);
 
 // The table as Markdown: the simulation parameters with their default in each preset, then the
-// adaptive settings with theirs (docs/fluids.md, "Parameters"; `sph_bench --parameter-table`
+// adaptive settings with theirs (docs/parameters.md; `sph_bench --parameter-table`
 // prints it).
 std::string parameterTableMarkdown();
 

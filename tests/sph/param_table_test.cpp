@@ -19,20 +19,20 @@
 namespace {
 
 std::string docsTable() {
-  std::ifstream in(std::string(SPH_DOCS_DIR) + "/fluids.md");
+  std::ifstream in(std::string(SPH_DOCS_DIR) + "/parameters.md");
   std::stringstream text;
   text << in.rdbuf();
   const std::string all = text.str();
   const std::string begin = "<!-- parameter-table:begin -->\n";
   const std::size_t from = all.find(begin);
   const std::size_t to = all.find("<!-- parameter-table:end -->");
-  if (from == std::string::npos || to == std::string::npos) return "(no parameter table markers in docs/fluids.md)";
+  if (from == std::string::npos || to == std::string::npos) return "(no parameter table markers in docs/parameters.md)";
   return all.substr(from + begin.size(), to - from - begin.size());
 }
 
 TEST(ParamTable, TheDocsTableIsTheCodesTable) {
   EXPECT_EQ(docsTable(), sph::parameterTableMarkdown())
-      << "docs/fluids.md's parameter table differs from server/sph/param_table.cpp: put the output of "
+      << "docs/parameters.md's parameter table differs from server/sph/param_table.cpp: put the output of "
          "`build/bin/sph_bench --parameter-table` between its markers";
 }
 

@@ -22,7 +22,7 @@ Vec3 childOffsetInBox(const Vec3& centre, const Vec3& dir, const BoxState& box, 
 // the neighbours lie to one side (the free surface) they are first turned into the plane across
 // that side (unturned, the most room there is out of the water). In a resting pool split whole
 // the roomiest axis keeps the closest children farther from other particles than drawn directions
-// do, and the split's compression and kick follow from how close they come (docs/fluids.md, "Where
+// do, and the split's compression and kick follow from how close they come (docs/level_changes.md, "Where
 // the children go").
 Vec3 roomiestChildOffset(const ParticleSet& p, const NeighborGrid& grid, std::size_t i, const BoxState& box,
                          float margin, float wanted);

@@ -11,7 +11,7 @@
 // step's displacements. Run after pbf's constraint, the placement's moves became velocity, which
 // its speed rule for placed particles scaled down whole, the water's own motion with it: the
 // Martin & Moyce front on the surface method, whose water is split and merged as its surface
-// moves, fell behind the experiment (docs/fluids.md, "Placement" and "Validation").
+// moves, fell behind the experiment (docs/level_changes.md, "Placement" and "Validation").
 #pragma once
 
 #include <cstdint>

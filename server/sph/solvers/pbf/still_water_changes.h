@@ -1,7 +1,7 @@
 // A level change (a split, a merge) in still water, taken up slowly. Where the adaptive step puts
 // a split's children or a merged particle is never where the water would hold them: pushed into
 // place within a frame, the neighbourhood's change of volume and of forces moves the whole water
-// above it, and every change stirs a resting tank (docs/fluids.md, "Changes in still water").
+// above it, and every change stirs a resting tank (docs/level_changes.md, "Changes in still water").
 // Orthmann & Kolb (2012) blend a new particle's contributions in over several steps; in pbf the
 // same is done in the constraint and the velocity update, per particle, after the local
 // placement (local_placement.h) has moved the fresh particles out of each other's way:
