@@ -90,6 +90,11 @@ TEST(PbfPasses, CorrectionFromKeptGradientsEqualsTheEvaluatedOneScalar) {
   expectKeptEqualsEvaluated(sph::scalar::pbfPassForms());
 }
 
+TEST(PbfPasses, CorrectionFromKeptGradientsEqualsTheEvaluatedOneAvx2) {
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx2)) GTEST_SKIP() << "no AVX2 here";
+  expectKeptEqualsEvaluated(sph::avx2::pbfPassForms());
+}
+
 TEST(PbfPasses, CorrectionFromKeptGradientsEqualsTheEvaluatedOneAvx512) {
   if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here";
   expectKeptEqualsEvaluated(sph::avx512::pbfPassForms());
