@@ -1,7 +1,7 @@
 // Google Benchmark of the neighbour search and the two pair-sum stages on the dambreak water, 1
 // and 2 threads, on two states after 600 steps (the column has fallen and the water sloshes, so
-// neighbour counts and memory order are those of a real run): `regular` (20,000 SMALL particles)
-// and `gaze` (the mixed SMALL/LARGE set the gaze method holds at that instant, replaying the
+// neighbour counts and memory order are those of a real run): `regular` (20,000 L0 particles)
+// and `gaze` (the mixed L0/L1 set the gaze method holds at that instant, replaying the
 // scene's own recording). Both run in one process, so their ratio, the one the gaze method's
 // speed-up depends on, is measured under the same machine load. The pair stages run in their
 // scalar and their vector (AVX-512) form.

@@ -11,5 +11,5 @@ namespace sph::scalar {
 }  // namespace sph::scalar
 
 sph::GridBinningForms sph::gridBinningForms() {
-  return formsForThisCpu(scalar::gridBinningForms, avx512::gridBinningForms);
+  return formsForThisCpu(scalar::gridBinningForms, avx2::gridBinningForms, avx512::gridBinningForms);
 }

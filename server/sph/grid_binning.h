@@ -32,6 +32,9 @@ struct GridBinningForms {
 namespace scalar {
 GridBinningForms gridBinningForms();
 }  // namespace scalar
+namespace avx2 {
+GridBinningForms gridBinningForms();
+}  // namespace avx2
 namespace avx512 {
 GridBinningForms gridBinningForms();
 }  // namespace avx512

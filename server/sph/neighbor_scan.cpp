@@ -49,5 +49,5 @@ NeighborScanForms neighborScanForms() { return {buildBlockLists}; }
 }  // namespace sph::scalar
 
 sph::NeighborScanForms sph::neighborScanForms() {
-  return formsForThisCpu(scalar::neighborScanForms, avx512::neighborScanForms);
+  return formsForThisCpu(scalar::neighborScanForms, avx2::neighborScanForms, avx512::neighborScanForms);
 }

@@ -44,12 +44,16 @@ inline constexpr std::size_t kMaxScanGroup = 2;
 
 // Appends to each target's list, in candidate order, every candidate j != self with
 // |x - x_j| <= (h + h_j) / 2, eq. (3.34); at most `capacity` entries per list are written.
-// The scalar form may write one slot past the list (at most index `capacity`), the AVX-512 form
-// up to 16 while the target's `room` allows; both set each target's count.
+// The scalar form may write one slot past the list (at most index `capacity`), the AVX2 and
+// AVX-512 forms up to 8 and 16 while the target's `room` allows; all set each target's count.
 namespace scalar {
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity);
 }  // namespace scalar
+namespace avx2 {
+void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
+                    std::size_t target_count, std::uint32_t capacity);
+}  // namespace avx2
 namespace avx512 {
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,
                     std::size_t target_count, std::uint32_t capacity);
@@ -82,6 +86,9 @@ struct BlockLists {
 namespace scalar {
 std::uint32_t buildBlockLists(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
 }  // namespace scalar
+namespace avx2 {
+std::uint32_t buildBlockLists(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
+}  // namespace avx2
 namespace avx512 {
 std::uint32_t buildBlockLists(const BlockLists& job, std::size_t begin, std::size_t end, std::uint32_t* scratch);
 }  // namespace avx512
@@ -93,6 +100,9 @@ struct NeighborScanForms {
 namespace scalar {
 NeighborScanForms neighborScanForms();
 }  // namespace scalar
+namespace avx2 {
+NeighborScanForms neighborScanForms();
+}  // namespace avx2
 namespace avx512 {
 NeighborScanForms neighborScanForms();
 }  // namespace avx512

@@ -295,12 +295,11 @@ TEST(SplitMerge, SplittingOrMergingARestingDfsphPoolDoesNotThrowIt) {
   expectSplittingOrMergingARestingPoolDoesNotKickIt("dfsph", {150, 0.1, 0.05f, 0.2});
 }
 
-// The AVX-512 search (16 neighbours at a time, each lane keeping its own best) must choose exactly
-// as the scalar one: on the water's lattice as filled (many equal distances, so the id decides),
-// then on a mixed set (L1 particles, which never pair, among the L0 ones); every fifth
-// particle does not want to merge.
-TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
-  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
+// The vector searches (8 or 16 neighbours at a time, each lane keeping its own best) must choose
+// exactly as the scalar one: on the water's lattice as filled (many equal distances, so the id
+// decides), then on a mixed set (L1 particles, which never pair, among the L0 ones); every
+// fifth particle does not want to merge. Every vector form the CPU has.
+void expectPartnerSearchChoosesAsTheScalarOne(decltype(&sph::scalar::choosePartners) vector_search) {
   sph::Simulation sim(poolScene(0.4, 0.4, 1200), sph::Level{0});
   sph::ParticleSet& p = sim.particles();
   for (int round = 0; round < 2; ++round) {
@@ -310,7 +309,7 @@ TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
     for (std::size_t i = 0; i < n; i += 5) decision[i] = sph::kRemain;
     std::vector<std::int32_t> vector_choice(n, 7), scalar_choice(n, 7);
     sph::PartnerScratch scratch;
-    sph::avx512::choosePartners(p, sim.grid(), decision, vector_choice, sph::Level{1}, scratch);
+    vector_search(p, sim.grid(), decision, vector_choice, sph::Level{1}, scratch);
     sph::scalar::choosePartners(p, sim.grid(), decision, scalar_choice, sph::Level{1}, scratch);
     EXPECT_EQ(vector_choice, scalar_choice) << "round " << round;
     std::size_t paired = 0;
@@ -325,6 +324,16 @@ TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOne) {
     sph::applySplitMerge(sim, decision, merge_some, keep, slots);
   }
   EXPECT_GT(p.countOf(sph::Level{1}), 0u);
+}
+
+TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOneAvx2) {
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx2)) GTEST_SKIP() << "no AVX2 here";
+  expectPartnerSearchChoosesAsTheScalarOne(sph::avx2::choosePartners);
+}
+
+TEST(SplitMerge, VectorPartnerSearchChoosesAsTheScalarOneAvx512) {
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here";
+  expectPartnerSearchChoosesAsTheScalarOne(sph::avx512::choosePartners);
 }
 
 TEST(SplitMerge, SplitDirectionIsAUnitVectorThatDependsOnTheId) {

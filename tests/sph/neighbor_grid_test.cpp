@@ -16,7 +16,7 @@
 
 namespace {
 
-// `count` particles of both classes (LARGE with probability `large_share`) at random in a cube of
+// `count` particles of both classes (L1 with probability `large_share`) at random in a cube of
 // side `extent`, at rest.
 sph::ParticleSet randomCloud(std::size_t count, float extent, double large_share, unsigned seed) {
   const auto classes = sph::thesisPreset().levelProps();
@@ -239,7 +239,7 @@ TEST(NeighborGrid, NeighbourRelationIsSymmetric) {
 TEST(NeighborGrid, ParticlesAmongTheirOwnClassHaveNoOtherSupport) {
   const auto classes = sph::thesisPreset().levelProps();
   ASSERT_NE(classes[0].support, classes[1].support);
-  // A bar 0.6 m long: SMALL particles in its first third, LARGE ones beyond.
+  // A bar 0.6 m long: L0 particles in its first third, L1 ones beyond.
   sph::ParticleSet p(3000);
   std::mt19937 rng(2024);
   std::uniform_real_distribution<float> along(0.0f, 0.6f), across(0.0f, 0.1f);

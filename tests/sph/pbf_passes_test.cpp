@@ -16,7 +16,7 @@
 
 namespace {
 
-// A compressed block of pbf water in a 0.6 m box: SMALL particles in its left half, LARGE ones in
+// A compressed block of pbf water in a 0.6 m box: L0 particles in its left half, L1 ones in
 // its right, each on its class's lattice squeezed to 0.9 of its spacing and jittered, so that the
 // constraint pushes everywhere and the middle holds mixed pairs.
 struct Block {
@@ -88,6 +88,11 @@ void expectKeptEqualsEvaluated(const sph::PbfPassForms& forms) {
 
 TEST(PbfPasses, CorrectionFromKeptGradientsEqualsTheEvaluatedOneScalar) {
   expectKeptEqualsEvaluated(sph::scalar::pbfPassForms());
+}
+
+TEST(PbfPasses, CorrectionFromKeptGradientsEqualsTheEvaluatedOneAvx2) {
+  if (!sph::simdAvailable(sph::SimdLevel::kAvx2)) GTEST_SKIP() << "no AVX2 here";
+  expectKeptEqualsEvaluated(sph::avx2::pbfPassForms());
 }
 
 TEST(PbfPasses, CorrectionFromKeptGradientsEqualsTheEvaluatedOneAvx512) {

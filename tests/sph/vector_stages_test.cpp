@@ -1,7 +1,8 @@
-// The AVX-512 pair sums (thesis_stages_avx512.cpp) against the scalar reference on a cloud mixing
-// SMALL and LARGE particles: the same density, pressure, acceleration, |n| and surface-distance
-// hop up to float rounding. Skipped where the CPU (or the build, SPH_FORCE_SCALAR) has no
-// AVX-512. The public stages run the form simdLevel() names, bit for bit.
+// The vector pair sums (thesis_stages_avx2.cpp, thesis_stages_avx512.cpp) against the scalar
+// reference on a cloud mixing L0 and L1 particles: every form the CPU has gives the same
+// density, pressure, acceleration, |n| and surface-distance hop up to float rounding. Skipped where
+// the CPU (or the build, SPH_FORCE_SCALAR) has no vector form. The public stages run the form
+// simdLevel() names, bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "sph/neighbor_grid.h"
 #include "sph/params.h"
@@ -62,13 +64,27 @@ void makeCloud(Cloud& cloud, const CloudShape& shape) {
   cloud.grid.build(cloud.particles);
 }
 
+// A vector form of the two stages.
+struct StageForm {
+  const char* name;
+  sph::SimdLevel level;
+  decltype(&sph::scalar::computeDensityPressure) density;
+  decltype(&sph::scalar::computeAccelerations) accelerations;
+};
+
+const StageForm kVectorForms[] = {
+    {"avx2", sph::SimdLevel::kAvx2, sph::avx2::computeDensityPressure, sph::avx2::computeAccelerations},
+    {"avx512", sph::SimdLevel::kAvx512, sph::avx512::computeDensityPressure, sph::avx512::computeAccelerations},
+};
+
 // |a - b| within `rel` of `scale` (the mean magnitude of the quantity over the cloud).
 void expectClose(float a, float b, double scale, double rel, const char* what, std::size_t i) {
   EXPECT_LE(std::abs(static_cast<double>(a) - b), rel * scale)
       << what << " of particle " << i << ": " << a << " vs " << b;
 }
 
-void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& shape = {}) {
+void expectFormMatchesScalar(const StageForm& form, const sph::SimParams& params, const CloudShape& shape) {
+  SCOPED_TRACE(form.name);
   Cloud cloud;
   cloud.params = params;
   makeCloud(cloud, shape);
@@ -78,7 +94,7 @@ void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& s
   sph::ParticleSet vector = cloud.particles;
 
   sph::scalar::computeDensityPressure(cloud.params, kernels, cloud.grid, scalar);
-  sph::avx512::computeDensityPressure(cloud.params, kernels, cloud.grid, vector);
+  form.density(cloud.params, kernels, cloud.grid, vector);
   double mean_rho = 0.0;
   for (float rho : scalar.density) mean_rho += rho / static_cast<double>(scalar.size());
   for (std::size_t i = 0; i < scalar.size(); ++i) {
@@ -90,7 +106,7 @@ void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& s
   // Forces from the same densities, so only the force stage's own differences show.
   vector = scalar;
   sph::scalar::computeAccelerations(cloud.params, kernels, cloud.grid, scalar, true);
-  sph::avx512::computeAccelerations(cloud.params, kernels, cloud.grid, vector, true);
+  form.accelerations(cloud.params, kernels, cloud.grid, vector, true);
   double mean_acc = 0.0, mean_normal = 0.0;
   std::size_t tension = 0, reached = 0;
   for (std::size_t i = 0; i < scalar.size(); ++i) {
@@ -116,8 +132,19 @@ void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& s
   }
 }
 
+// Every vector form this CPU has against the scalar one, to the same tolerance.
+void expectVectorMatchesScalar(const sph::SimParams& params, const CloudShape& shape = {}) {
+  for (const StageForm& form : kVectorForms) {
+    if (sph::simdAvailable(form.level)) expectFormMatchesScalar(form, params, shape);
+  }
+}
+
+bool anyVectorForm() {
+  return sph::simdAvailable(sph::SimdLevel::kAvx2) || sph::simdAvailable(sph::SimdLevel::kAvx512);
+}
+
 TEST(VectorStages, MatchTheScalarReference) {
-  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
+  if (!anyVectorForm()) GTEST_SKIP() << "no vector form here: one form only";
   expectVectorMatchesScalar(sph::thesisPreset());
 }
 
@@ -125,7 +152,7 @@ TEST(VectorStages, MatchTheScalarReference) {
 // and the start of the next (and stop where a list is shorter than the rest of the batch), with
 // pairs of particles on one point among them.
 TEST(VectorStages, MatchTheScalarReferenceOnShortAndEmptyLists) {
-  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
+  if (!anyVectorForm()) GTEST_SKIP() << "no vector form here: one form only";
   Cloud probe;
   makeCloud(probe, {1.2f, 0});
   std::size_t empty = 0, short_lists = 0;
@@ -141,7 +168,7 @@ TEST(VectorStages, MatchTheScalarReferenceOnShortAndEmptyLists) {
 
 // The vector stages tell the classes apart by mass where the masses differ, else by support.
 TEST(VectorStages, MatchTheScalarReferenceWithEqualClassMasses) {
-  if (!sph::simdAvailable(sph::SimdLevel::kAvx512)) GTEST_SKIP() << "no AVX-512 here: one form only";
+  if (!anyVectorForm()) GTEST_SKIP() << "no vector form here: one form only";
   sph::SimParams params = sph::thesisPreset();
   params.mass_large = params.mass_small;
   ASSERT_NE(params.levelProps()[0].support, params.levelProps()[1].support);
@@ -157,26 +184,44 @@ TEST(VectorStages, PublicStagesRunTheChosenForm) {
   const sph::KernelTable kernels = sph::makeKernelTable(cloud.params);
   sph::ParticleSet chosen = cloud.particles;
   sph::ParticleSet direct = cloud.particles;
-  const bool avx512 = sph::simdLevel() == sph::SimdLevel::kAvx512;
+  StageForm form{"scalar", sph::SimdLevel::kScalar, sph::scalar::computeDensityPressure,
+                 sph::scalar::computeAccelerations};
+  for (const StageForm& f : kVectorForms) {
+    if (f.level == sph::simdLevel()) form = f;
+  }
   sph::computeDensityPressure(cloud.params, kernels, cloud.grid, chosen);
-  (avx512 ? sph::avx512::computeDensityPressure : sph::scalar::computeDensityPressure)(cloud.params, kernels,
-                                                                                       cloud.grid, direct);
+  form.density(cloud.params, kernels, cloud.grid, direct);
   EXPECT_EQ(chosen.density, direct.density);
   sph::computeAccelerations(cloud.params, kernels, cloud.grid, chosen, true);
-  (avx512 ? sph::avx512::computeAccelerations : sph::scalar::computeAccelerations)(cloud.params, kernels, cloud.grid,
-                                                                                   direct, true);
+  form.accelerations(cloud.params, kernels, cloud.grid, direct, true);
   EXPECT_EQ(chosen.acceleration, direct.acceleration);
   EXPECT_EQ(chosen.surface_hop, direct.surface_hop);
 }
 
-TEST(SimdLevel, TheEnvironmentCanForceScalarButNotAMissingInstructionSet) {
-  EXPECT_EQ(sph::chooseSimdLevel(true, nullptr), sph::SimdLevel::kAvx512);
-  EXPECT_EQ(sph::chooseSimdLevel(true, ""), sph::SimdLevel::kAvx512);
-  EXPECT_EQ(sph::chooseSimdLevel(true, "auto"), sph::SimdLevel::kAvx512);
-  EXPECT_EQ(sph::chooseSimdLevel(true, "scalar"), sph::SimdLevel::kScalar);
-  EXPECT_EQ(sph::chooseSimdLevel(false, nullptr), sph::SimdLevel::kScalar);
-  EXPECT_EQ(sph::chooseSimdLevel(false, "avx512"), sph::SimdLevel::kScalar);
-  EXPECT_THROW(sph::chooseSimdLevel(true, "sse9"), std::invalid_argument);
-  EXPECT_TRUE(sph::simdAvailable(sph::SimdLevel::kScalar));
+TEST(SimdLevel, TheEnvironmentCanForceALowerFormButNotAMissingInstructionSet) {
+  using sph::SimdLevel;
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx512, nullptr), SimdLevel::kAvx512);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx512, ""), SimdLevel::kAvx512);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx512, "auto"), SimdLevel::kAvx512);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx512, "avx2"), SimdLevel::kAvx2);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx512, "scalar"), SimdLevel::kScalar);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx2, nullptr), SimdLevel::kAvx2);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kAvx2, "avx512"), SimdLevel::kAvx2);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kScalar, nullptr), SimdLevel::kScalar);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kScalar, "avx512"), SimdLevel::kScalar);
+  EXPECT_EQ(sph::chooseSimdLevel(SimdLevel::kScalar, "avx2"), SimdLevel::kScalar);
+  EXPECT_THROW(sph::chooseSimdLevel(SimdLevel::kAvx512, "sse9"), std::invalid_argument);
+  try {
+    sph::chooseSimdLevel(SimdLevel::kAvx512, "AVX2");
+    ADD_FAILURE() << "names are lower case";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("auto, avx512, avx2 or scalar"), std::string::npos) << e.what();
+  }
+  EXPECT_STREQ(sph::simdLevelName(SimdLevel::kAvx2), "avx2");
+  EXPECT_TRUE(sph::simdAvailable(SimdLevel::kScalar));
   EXPECT_TRUE(sph::simdAvailable(sph::simdLevel()));
+  // An AVX-512 CPU has AVX2 as well: the dispatch's order is the CPUs'.
+  if (sph::simdAvailable(SimdLevel::kAvx512)) {
+    EXPECT_TRUE(sph::simdAvailable(SimdLevel::kAvx2));
+  }
 }

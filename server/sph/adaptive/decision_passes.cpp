@@ -11,5 +11,5 @@ namespace sph::scalar {
 }  // namespace sph::scalar
 
 sph::DecisionPassForms sph::decisionPassForms() {
-  return formsForThisCpu(scalar::decisionPassForms, avx512::decisionPassForms);
+  return formsForThisCpu(scalar::decisionPassForms, avx2::decisionPassForms, avx512::decisionPassForms);
 }

@@ -79,6 +79,9 @@ struct DecisionPassForms {
 namespace scalar {
 DecisionPassForms decisionPassForms();
 }  // namespace scalar
+namespace avx2 {
+DecisionPassForms decisionPassForms();
+}  // namespace avx2
 namespace avx512 {
 DecisionPassForms decisionPassForms();
 }  // namespace avx512

@@ -71,7 +71,7 @@ void choosePartners(const ParticleSet& p, const NeighborGrid& grid, std::span<co
 }
 
 PartnerSearchForms partnerSearchForms() {
-  return formsForThisCpu(scalar::partnerSearchForms, avx512::partnerSearchForms);
+  return formsForThisCpu(scalar::partnerSearchForms, avx2::partnerSearchForms, avx512::partnerSearchForms);
 }
 
 PartnerSearchForms scalar::partnerSearchForms() { return {scalar::choosePartners}; }

@@ -28,6 +28,10 @@ namespace scalar {
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
 }  // namespace scalar
+namespace avx2 {
+void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
+                    std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
+}  // namespace avx2
 namespace avx512 {
 void choosePartners(const ParticleSet& particles, const NeighborGrid& grid, std::span<const std::int8_t> decision,
                     std::span<std::int32_t> partner, Level coarsest, PartnerScratch& scratch);
@@ -41,6 +45,9 @@ struct PartnerSearchForms {
 namespace scalar {
 PartnerSearchForms partnerSearchForms();
 }  // namespace scalar
+namespace avx2 {
+PartnerSearchForms partnerSearchForms();
+}  // namespace avx2
 namespace avx512 {
 PartnerSearchForms partnerSearchForms();
 }  // namespace avx512

@@ -1,46 +1,66 @@
 // Which instruction set the library's vector loops run, chosen once at run time from the CPU.
 //
 // The pattern, the same for every pass family that has a vector form `foo`:
-//   foo.h          struct FooForms (the passes, as function pointers); scalar::fooForms() and
-//                  avx512::fooForms(); and sph::fooForms(), the forms this CPU runs
+//   foo.h          struct FooForms (the passes, as function pointers); scalar::fooForms(),
+//                  avx2::fooForms() and avx512::fooForms(); and sph::fooForms(), the forms this
+//                  CPU runs
 //   foo.inc        the passes written once against a Lanes type (pair_lanes_scalar.h,
-//                  pair_lanes_avx512.h), where they are pair loops
+//                  pair_lanes_avx2.h, pair_lanes_avx512.h), where they are pair loops
 //   foo.cpp        the scalar form (namespace sph::scalar) and sph::fooForms(), which is
-//                  formsForThisCpu(scalar::fooForms, avx512::fooForms)
+//                  formsForThisCpu(scalar::fooForms, avx2::fooForms, avx512::fooForms)
+//   foo_avx2.cpp   the AVX2 + FMA form (namespace sph::avx2, between SPH_AVX2_BEGIN and
+//                  SPH_AVX2_END, avx2_target.h)
 //   foo_avx512.cpp the AVX-512 form (namespace sph::avx512, between SPH_AVX512_BEGIN and
 //                  SPH_AVX512_END, avx512_target.h)
-// The thesis's two pair stages (solvers/thesis/thesis_stages_avx512.cpp) keep hand-written
-// intrinsics: their 16-lane batches run on from one particle's list into the next's, which a
-// per-particle pass on lanes does not express.
+// The thesis's two pair stages (solvers/thesis/thesis_stages_avx2.cpp, _avx512.cpp), the
+// neighbour scan and the merge-partner search keep hand-written intrinsics: the stages' batches
+// run on from one particle's list into the next's, which a per-particle pass on lanes does not
+// express, and the scan compresses accepted lanes, which a lane type does not offer.
 // The whole library is built for baseline x86-64, so one build runs on any x86-64 CPU and takes
-// the AVX-512 forms where the CPU has them.
+// the best form the CPU has: AVX-512, else AVX2 + FMA, else scalar.
+//
+// Why hand-written lane types and not a portable library (Google Highway, xsimd): the AVX2 lane
+// type is one small header beside the AVX-512 one, the pass sources stay single, and Highway was
+// not yet measured against them here. AVX2 runs the thesis preset's step 2.4-2.9x and pbf's about
+// 2x faster than scalar (docs/performance.md, "Vector forms").
 #pragma once
 
 #include <string>
 
 namespace sph {
 
-enum class SimdLevel { kScalar, kAvx512 };
+// In order of preference: a later level is chosen over an earlier one wherever both run.
+enum class SimdLevel { kScalar, kAvx2, kAvx512 };
 
 const char* simdLevelName(SimdLevel level);
 
-// The level of this process: AVX-512 where the CPU has AVX-512 F, BW, DQ, VL and CD and the build
-// has the AVX-512 forms (not with -DSPH_FORCE_SCALAR=ON), unless the environment says
-// SPH_SIMD=scalar. Decided on the first call; the same for the rest of the process.
+// The level of this process: the best one available (simdAvailable) unless the environment's
+// SPH_SIMD names a lower one. Decided on the first call; the same for the rest of the process.
 SimdLevel simdLevel();
 
-// Whether this build on this CPU can run `level` (the tests run both forms side by side).
+// Whether this build on this CPU can run `level` (the tests run every available form side by
+// side): AVX-512 needs AVX-512 F, BW, DQ, VL and CD; AVX2 needs AVX2, FMA and POPCNT; neither
+// with -DSPH_FORCE_SCALAR=ON.
 bool simdAvailable(SimdLevel level);
 
-// simdLevel()'s rule on its inputs: `env` is SPH_SIMD's value or nullptr. Throws
-// std::invalid_argument for a value other than "scalar", "avx512" or "auto"; "avx512" where it
-// is not available falls back to scalar (a portable default, never a crash).
-SimdLevel chooseSimdLevel(bool avx512_available, const char* env);
+// simdLevel()'s rule on its inputs: `best` is the best level available, `env` SPH_SIMD's value or
+// nullptr. Throws std::invalid_argument for a value other than "scalar", "avx2", "avx512" or
+// "auto"; a level above `best` falls back to `best` (a portable default, never a crash).
+SimdLevel chooseSimdLevel(SimdLevel best, const char* env);
 
-// The forms of a pass family that simdLevel() names: formsForThisCpu(scalar::fooForms, avx512::fooForms).
+// The forms of a pass family that simdLevel() names:
+// formsForThisCpu(scalar::fooForms, avx2::fooForms, avx512::fooForms).
 template <typename Forms>
-Forms formsForThisCpu(Forms (*scalar_forms)(), Forms (*avx512_forms)()) {
-  return simdLevel() == SimdLevel::kAvx512 ? avx512_forms() : scalar_forms();
+Forms formsForThisCpu(Forms (*scalar_forms)(), Forms (*avx2_forms)(), Forms (*avx512_forms)()) {
+  switch (simdLevel()) {
+    case SimdLevel::kAvx512:
+      return avx512_forms();
+    case SimdLevel::kAvx2:
+      return avx2_forms();
+    case SimdLevel::kScalar:
+      break;
+  }
+  return scalar_forms();
 }
 
 }  // namespace sph

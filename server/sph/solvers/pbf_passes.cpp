@@ -15,4 +15,6 @@ using Lanes = ScalarLanes;
 #include "sph/solvers/pbf_passes.inc"
 }  // namespace sph::scalar
 
-sph::PbfPassForms sph::pbfPassForms() { return formsForThisCpu(scalar::pbfPassForms, avx512::pbfPassForms); }
+sph::PbfPassForms sph::pbfPassForms() {
+  return formsForThisCpu(scalar::pbfPassForms, avx2::pbfPassForms, avx512::pbfPassForms);
+}

@@ -94,6 +94,9 @@ struct PbfPassForms {
 namespace scalar {
 PbfPassForms pbfPassForms();
 }  // namespace scalar
+namespace avx2 {
+PbfPassForms pbfPassForms();
+}  // namespace avx2
 namespace avx512 {
 PbfPassForms pbfPassForms();
 }  // namespace avx512

@@ -15,5 +15,5 @@ using Lanes = ScalarLanes;
 }  // namespace sph::scalar
 
 sph::VelocityPassForms sph::velocityPassForms() {
-  return formsForThisCpu(scalar::velocityPassForms, avx512::velocityPassForms);
+  return formsForThisCpu(scalar::velocityPassForms, avx2::velocityPassForms, avx512::velocityPassForms);
 }

@@ -58,6 +58,9 @@ struct VelocityPassForms {
 namespace scalar {
 VelocityPassForms velocityPassForms();
 }  // namespace scalar
+namespace avx2 {
+VelocityPassForms velocityPassForms();
+}  // namespace avx2
 namespace avx512 {
 VelocityPassForms velocityPassForms();
 }  // namespace avx512

@@ -11,4 +11,6 @@ using Lanes = ScalarLanes;
 #include "sph/solvers/dfsph/dfsph_passes.inc"
 }  // namespace sph::scalar
 
-sph::DfsphPassForms sph::dfsphPassForms() { return formsForThisCpu(scalar::dfsphPassForms, avx512::dfsphPassForms); }
+sph::DfsphPassForms sph::dfsphPassForms() {
+  return formsForThisCpu(scalar::dfsphPassForms, avx2::dfsphPassForms, avx512::dfsphPassForms);
+}

@@ -68,6 +68,9 @@ struct DfsphPassForms {
 namespace scalar {
 DfsphPassForms dfsphPassForms();
 }  // namespace scalar
+namespace avx2 {
+DfsphPassForms dfsphPassForms();
+}  // namespace avx2
 namespace avx512 {
 DfsphPassForms dfsphPassForms();
 }  // namespace avx512

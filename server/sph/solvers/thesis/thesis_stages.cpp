@@ -28,7 +28,9 @@ void computeAccelerations(const SimParams& params, const KernelTable& kernels, c
   thesisStageForms().computeAccelerations(params, kernels, grid, particles, propagate_surface_distance);
 }
 
-ThesisStageForms thesisStageForms() { return formsForThisCpu(scalar::thesisStageForms, avx512::thesisStageForms); }
+ThesisStageForms thesisStageForms() {
+  return formsForThisCpu(scalar::thesisStageForms, avx2::thesisStageForms, avx512::thesisStageForms);
+}
 
 ThesisStageForms scalar::thesisStageForms() {
   return {scalar::computeDensityPressure, scalar::computeAccelerations, scalar::integrateInBareBox};

@@ -40,6 +40,12 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                           ParticleSet& particles, bool propagate_surface_distance = false);
 }  // namespace scalar
+namespace avx2 {
+void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                            ParticleSet& particles);
+void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
+                          ParticleSet& particles, bool propagate_surface_distance = false);
+}  // namespace avx2
 namespace avx512 {
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                             ParticleSet& particles);
@@ -53,6 +59,10 @@ namespace scalar {
 void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::size_t end, const float* acceleration,
                         const float* radius, float* velocity, float* position);
 }  // namespace scalar
+namespace avx2 {
+void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::size_t end, const float* acceleration,
+                        const float* radius, float* velocity, float* position);
+}  // namespace avx2
 namespace avx512 {
 void integrateInBareBox(float dt, const BoxState& box, std::size_t begin, std::size_t end, const float* acceleration,
                         const float* radius, float* velocity, float* position);
@@ -70,6 +80,9 @@ struct ThesisStageForms {
 namespace scalar {
 ThesisStageForms thesisStageForms();
 }  // namespace scalar
+namespace avx2 {
+ThesisStageForms thesisStageForms();
+}  // namespace avx2
 namespace avx512 {
 ThesisStageForms thesisStageForms();
 }  // namespace avx512

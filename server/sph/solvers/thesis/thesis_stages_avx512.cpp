@@ -124,9 +124,9 @@ struct PairBatch {
 };
 
 // What both pair loops need to tell the size classes apart and evaluate their kernels.
-class SizeClassLanes {
+class LevelLanes {
  public:
-  SizeClassLanes(const SimParams& params, const KernelTable& kernels, const ParticleSet& p)
+  LevelLanes(const SimParams& params, const KernelTable& kernels, const ParticleSet& p)
       : lanes_{LaneKernel(kernels[0]), LaneKernel(kernels[1])}, mass_(p.mass.data()) {
     // The attribute whose value tells the classes apart: the mass when their masses differ (the
     // loops gather it anyway, so spotting a mixed pair costs no extra gather), else the support
@@ -236,7 +236,7 @@ class DensityStage {
     OwnerKernels kernels;
   };
 
-  DensityStage(const SimParams& params, const KernelTable& kernels, const SizeClassLanes& classes, KernelBlend& blend,
+  DensityStage(const SimParams& params, const KernelTable& kernels, const LevelLanes& classes, KernelBlend& blend,
                ParticleSet& p)
       : kernels_(kernels),
         classes_(classes),
@@ -278,7 +278,7 @@ class DensityStage {
 
  private:
   const KernelTable& kernels_;
-  const SizeClassLanes& classes_;
+  const LevelLanes& classes_;
   KernelBlend& kernel_blend_;
   ParticleSet& p_;
   const float* pos_;
@@ -296,7 +296,7 @@ class ForceStage {
     OwnerKernels kernels;
   };
 
-  ForceStage(const SimParams& params, const KernelTable& kernels, const SizeClassLanes& classes, KernelBlend& blend,
+  ForceStage(const SimParams& params, const KernelTable& kernels, const LevelLanes& classes, KernelBlend& blend,
              ParticleSet& p, bool propagate_surface_distance)
       : constants_(params),
         kernels_(kernels),
@@ -426,7 +426,7 @@ class ForceStage {
 
   const ForceConstants constants_;
   const KernelTable& kernels_;
-  const SizeClassLanes& classes_;
+  const LevelLanes& classes_;
   KernelBlend& kernel_blend_;
   ParticleSet& p_;
   const float *pos_, *vel_, *mass_, *volume_, *pressure_term_, *surface_distance_;
@@ -443,14 +443,14 @@ class ForceStage {
 
 #include "sph/solvers/thesis/bare_box_integration.inc"
 
-// Each stage gets its SizeClassLanes (shared, read-only) and KernelBlend (its own scratch) from
+// Each stage gets its LevelLanes (shared, read-only) and KernelBlend (its own scratch) from
 // outside: a batch reads its kernel constants through pointers into them, and while they were
 // members of the stage GCC could not tell those loads from the stage's own sums, so it kept the
 // force loop's ten sums in memory and stored them after every batch (docs/performance.md).
 void computeDensityPressure(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid,
                             ParticleSet& p) {
   const std::size_t n = p.size();
-  const SizeClassLanes classes(params, kernels, p);
+  const LevelLanes classes(params, kernels, p);
   // Blocks to whichever thread is free: the cost of a particle varies with its class and count.
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t block = 0; block < NeighborGrid::blockCount(n); ++block) {
@@ -463,7 +463,7 @@ void computeDensityPressure(const SimParams& params, const KernelTable& kernels,
 void computeAccelerations(const SimParams& params, const KernelTable& kernels, const NeighborGrid& grid, ParticleSet& p,
                           bool propagate_surface_distance) {
   const std::size_t n = p.size();
-  const SizeClassLanes classes(params, kernels, p);
+  const LevelLanes classes(params, kernels, p);
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t block = 0; block < NeighborGrid::blockCount(n); ++block) {
     KernelBlend blend;

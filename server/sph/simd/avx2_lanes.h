@@ -1,0 +1,87 @@
+// Small AVX2 helpers shared by the library's AVX2 vector loops (the pair stages, the neighbour
+// scan, the merge-partner search): which of 8 lanes are live, gathers from per-particle arrays, and
+// the lane masks AVX2 keeps in vector registers (all bits of a lane set) where AVX-512 has mask
+// registers. For the AVX2 forms only (the *_avx2.cpp files); built for AVX2 like them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "sph/simd/avx2_target.h"
+
+SPH_AVX2_BEGIN
+
+namespace sph::lanes2 {
+
+// Lane l's own bit, for turning a bit mask into a vector mask.
+inline __m256i laneBits() { return _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128); }
+
+// The first `left` lanes (all 8 when left >= 8): the live lanes of a batch near a range's end.
+inline __m256 liveLanes(std::uint32_t left) {
+  const int live = left >= 8 ? 8 : static_cast<int>(left);
+  return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(live), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7)));
+}
+
+// The lanes whose bits are set in `bits` (bit l: lane l), as a vector mask.
+inline __m256 maskOfBits(std::uint32_t bits) {
+  const __m256i b = laneBits();
+  return _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), b), b));
+}
+
+// The lanes of a vector mask as bits (bit l: lane l).
+inline std::uint32_t bitsOf(__m256 m) { return static_cast<std::uint32_t>(_mm256_movemask_ps(m)); }
+
+// base[idx[l]] on live lanes, 0 on the others.
+inline __m256 gather(__m256 live, __m256i idx, const float* base) {
+  return _mm256_mask_i32gather_ps(_mm256_setzero_ps(), base, idx, live, 4);
+}
+
+// The same for 32-bit integers.
+inline __m256i gatherInt(__m256 live, __m256i idx, const std::int32_t* base) {
+  return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), idx,
+                                     _mm256_castps_si256(live), 4);
+}
+
+// Positions and velocities are packed x, y, z triples: the gather index of particle j is 3 j.
+inline __m256i tripleIndex(__m256i idx) { return _mm256_add_epi32(idx, _mm256_add_epi32(idx, idx)); }
+
+// The sum and the least of the 8 lanes.
+inline float sum(__m256 v) {
+  __m128 s = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  s = _mm_add_ps(s, _mm_movehl_ps(s, s));
+  s = _mm_add_ss(s, _mm_movehdup_ps(s));
+  return _mm_cvtss_f32(s);
+}
+inline float minOf(__m256 v) {
+  __m128 s = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  s = _mm_min_ps(s, _mm_movehl_ps(s, s));
+  s = _mm_min_ss(s, _mm_movehdup_ps(s));
+  return _mm_cvtss_f32(s);
+}
+
+// The triples base[3 j .. 3 j + 2] of the particles j = list[l] on the live lanes, as x, y and z
+// lanes (0 on dead lanes): one three-float load per particle (two loads that stay inside the
+// triple, so the array's last one is safe), then a 4 x 4 transpose within each 128-bit half, as
+// avx512_lanes.h does in quarters. Lane l's triple goes to half l / 4 of register l % 4.
+inline void gatherTriples(__m256 live, const std::uint32_t* list, const float* base, __m256& x, __m256& y, __m256& z) {
+  const std::uint32_t bits = bitsOf(live);
+  __m128 row[8];
+  for (int l = 0; l < 8; ++l) {
+    const std::uint32_t j = (bits >> l) & 1u ? list[l] : 0u;
+    const float* t = base + 3 * static_cast<std::size_t>(j);
+    row[l] = _mm_movelh_ps(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(t))), _mm_load_ss(t + 2));
+  }
+  __m256 r[4];
+  for (int k = 0; k < 4; ++k) r[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(row[k]), row[k + 4], 1);
+  const __m256d xy01 = _mm256_castps_pd(_mm256_unpacklo_ps(r[0], r[1]));  // x0 x1 y0 y1 per half
+  const __m256d z01 = _mm256_castps_pd(_mm256_unpackhi_ps(r[0], r[1]));   // z0 z1 0 0
+  const __m256d xy23 = _mm256_castps_pd(_mm256_unpacklo_ps(r[2], r[3]));
+  const __m256d z23 = _mm256_castps_pd(_mm256_unpackhi_ps(r[2], r[3]));
+  x = _mm256_and_ps(live, _mm256_castpd_ps(_mm256_unpacklo_pd(xy01, xy23)));
+  y = _mm256_and_ps(live, _mm256_castpd_ps(_mm256_unpackhi_pd(xy01, xy23)));
+  z = _mm256_and_ps(live, _mm256_castpd_ps(_mm256_unpacklo_pd(z01, z23)));
+}
+
+}  // namespace sph::lanes2
+
+SPH_AVX2_END

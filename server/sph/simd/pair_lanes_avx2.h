@@ -1,0 +1,50 @@
+// 8 lanes of AVX2 + FMA for the pair-pass templates (pair_lanes_scalar.h lists the interface).
+// A lane mask is a vector with all bits of its live lanes set, as AVX2's compares, blends and
+// masked loads take it. For the AVX2 forms only; built for AVX2 like them.
+#pragma once
+
+#include <cstdint>
+
+#include "sph/simd/avx2_lanes.h"
+#include "sph/simd/avx2_target.h"
+
+SPH_AVX2_BEGIN
+
+namespace sph {
+
+struct Avx2Lanes {
+  static constexpr int kWidth = 8;
+  using F = __m256;
+  using I = __m256i;
+  using M = __m256;
+
+  static F set(float x) { return _mm256_set1_ps(x); }
+  static F zero() { return _mm256_setzero_ps(); }
+  static M live(std::uint32_t left) { return lanes2::liveLanes(left); }
+  static I loadIndex(const std::uint32_t* p, M m) {
+    return _mm256_maskload_epi32(reinterpret_cast<const int*>(p), _mm256_castps_si256(m));
+  }
+  static F load(const float* p, M m) { return _mm256_maskload_ps(p, _mm256_castps_si256(m)); }
+  static void store(float* p, M m, F v) { _mm256_maskstore_ps(p, _mm256_castps_si256(m), v); }
+  static F gather(M m, I j, const float* base) { return lanes2::gather(m, j, base); }
+  static void gatherTriples(M m, const std::uint32_t* list, const float* base, F& x, F& y, F& z) {
+    lanes2::gatherTriples(m, list, base, x, y, z);
+  }
+  static M le(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_LE_OQ); }
+  static M lt(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_LT_OQ); }
+  static M eq(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_EQ_OQ); }
+  static M neq(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_NEQ_OQ); }
+  static M andMask(M a, M b) { return _mm256_and_ps(a, b); }
+  static bool any(M m) { return _mm256_movemask_ps(m) != 0; }
+  static F select(M m, F a, F b) { return _mm256_blendv_ps(b, a, m); }
+  static F maskz(M m, F a) { return _mm256_and_ps(m, a); }
+  static F max(F a, F b) { return _mm256_max_ps(a, b); }
+  static F min(F a, F b) { return _mm256_min_ps(a, b); }
+  static F sqrt(F a) { return _mm256_sqrt_ps(a); }
+  static float sum(F v) { return lanes2::sum(v); }
+  static float minOf(F v) { return lanes2::minOf(v); }
+};
+
+}  // namespace sph
+
+SPH_AVX2_END
