@@ -65,7 +65,7 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--preset", sim.preset,
                  "fluid: pbf (incompressible, position based), dfsph (divergence-free, experimental: docs/fluids.md), "
                  "thesis (the thesis's compressible SPH, k = 3), or scene (the scene file's own preset)")
-      ->check(CLI::IsMember({"pbf", "dfsph", "thesis", "scene"}))
+      ->check(CLI::IsMember(sph::presetOrSceneNames()))
       ->capture_default_str();
   cli.option_defaults()->group("Run and frames");
   cli.add_option("--load-state", sim.load_state,

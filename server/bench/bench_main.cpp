@@ -57,7 +57,7 @@ std::optional<int> parseRequest(int argc, char** argv, bench::BenchRequest& requ
                  "compressible SPH: its tables) or scene (each scene file's own); a comma list runs each scene "
                  "once per preset, taking turns, and compares their cost")
       ->delimiter(',')
-      ->check(CLI::IsMember({"thesis", "pbf", "dfsph", "scene"}));
+      ->check(CLI::IsMember(sph::presetOrSceneNames()));
   app.add_option("--load-state", request.load_state,
                  "continue from this checkpoint (written by --save-state; one scene, method and preset)")
       ->check(CLI::ExistingFile);

@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
   cli::prepare(app, "sph_validate");
   app.add_option("--preset", o.presets, "presets to validate (thesis, pbf, dfsph)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"thesis", "pbf", "dfsph"}));
+      ->check(CLI::IsMember(sph::presetNames()));
   app.add_option("--method", o.methods, "methods for the dam break (regular, surface, gaze, hybrid, foveated)")
       ->delimiter(',')
       ->check(CLI::IsMember(sph::methodNames()));

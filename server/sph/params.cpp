@@ -104,6 +104,12 @@ SimParams dfsphPreset() {
   return p;
 }
 
+std::vector<std::string> presetOrSceneNames() {
+  std::vector<std::string> names = presetNames();
+  names.emplace_back("scene");
+  return names;
+}
+
 const std::vector<std::string>& presetNames() {
   static const std::vector<std::string> names = {"thesis", "pbf", "dfsph"};
   return names;

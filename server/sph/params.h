@@ -97,5 +97,7 @@ SimParams dfsphPreset();
 // Presets known by name; returns false when `name` is unknown.
 bool presetByName(const std::string& name, SimParams& out);
 const std::vector<std::string>& presetNames();
+// presetNames() and "scene" (each scene file's own preset): what the programs' --preset takes.
+std::vector<std::string> presetOrSceneNames();
 
 }  // namespace sph
