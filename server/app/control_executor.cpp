@@ -91,19 +91,10 @@ void fillStatus(ControlTarget& target, gsph::v1::ServerStatus& status) {
   status.set_preset(s.preset());
   status.set_paused(target.settings.paused);
   const sph::ParticleSet& p = s.sim().particles();
-  const auto by_level = p.countByLevel();
   status.set_step(s.sim().stepCount());
   status.set_sim_time(s.sim().time());
   status.set_particle_count(static_cast<std::uint32_t>(p.size()));
-  for (int k = 0; k < s.scene().params.levels; ++k) {
-    status.add_level_counts(static_cast<std::uint32_t>(by_level[static_cast<std::size_t>(k)]));
-  }
-  // The deprecated pair, for clients of the previous version (sph.proto).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-  status.set_large_count(static_cast<std::uint32_t>(by_level[1]));
-  status.set_small_count(static_cast<std::uint32_t>(by_level[0]));
-#pragma GCC diagnostic pop
+  net::setLevelCounts(s.sim(), status);
   status.clear_scenes();
   try {
     for (const std::string& name : scene::listScenes(s.sceneDir())) status.add_scenes(name);

@@ -130,16 +130,7 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   f.set_periphery_gain(info.periphery_gain);
   f.set_realtime_ratio(info.realtime_ratio);
   f.set_particle_count(static_cast<std::uint32_t>(p.size()));
-  const auto by_level = p.countByLevel();
-  f.clear_level_counts();
-  for (int k = 0; k < sim.params().levels; ++k)
-    f.add_level_counts(static_cast<std::uint32_t>(by_level[static_cast<std::size_t>(k)]));
-    // The deprecated pair, for clients of the previous version (sph.proto).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-  f.set_large_count(static_cast<std::uint32_t>(by_level[1]));
-  f.set_small_count(static_cast<std::uint32_t>(by_level[0]));
-#pragma GCC diagnostic pop
+  setLevelCounts(sim, f);
 
   const sph::PhaseTimings& t = sim.lastTimings();
   gsph::v1::PhaseTimings* pt = f.mutable_timings();

@@ -48,6 +48,23 @@ gsph::v1::Method toProtoMethod(sph::Method m);
 bool fromProtoMethod(int value, sph::Method& out);
 gsph::v1::GazeMode toProtoGazeMode(sph::GazeMode m);
 
+// The simulation's particles per level, L0 first, one entry per level of the run, into a Frame or
+// a ServerStatus; and the deprecated pair they replace, for clients of the previous version
+// (sph.proto).
+template <class Message>
+void setLevelCounts(const sph::Simulation& sim, Message& out) {
+  const auto by_level = sim.particles().countByLevel();
+  out.clear_level_counts();
+  for (int k = 0; k < sim.params().levels; ++k) {
+    out.add_level_counts(static_cast<std::uint32_t>(by_level[static_cast<std::size_t>(k)]));
+  }
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  out.set_large_count(static_cast<std::uint32_t>(by_level[1]));
+  out.set_small_count(static_cast<std::uint32_t>(by_level[0]));
+#pragma GCC diagnostic pop
+}
+
 class FrameEncoder {
  public:
   explicit FrameEncoder(PositionEncoding encoding = PositionEncoding::Float32, bool velocities = false)

@@ -1,6 +1,7 @@
 #include "sph/fill_water.h"
 
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,7 +12,7 @@ void fillWater(const Scene& scene, Level start_class, const FluidSolver& solver,
   const auto levels = scene.params.levelProps();
   const LevelProps props = levels[levelIndex(start_class)];
   const std::array<int, kMaxLevels> fill = initialFill(scene, start_class);
-  const int count = initialParticleCount(scene, start_class);
+  const int count = std::accumulate(fill.begin(), fill.end(), 0);
   // Every particle may refine to L0: the finest count must fit as well as the start's.
   const int finest = initialParticleCount(scene, Level{0});
   if (static_cast<std::size_t>(finest) > out.capacity()) {
