@@ -190,8 +190,8 @@ void plot(const std::vector<FrontRun>& runs, const std::vector<std::string>& pre
      << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin \\& Moyce 1952'";
   for (const FrontRun& r : runs) {
     gp << ", '" << (dir / "surge_front.csv").string() << "' using ((strcol(1) eq '" << r.preset << "' && strcol(2) eq '"
-       << r.method << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, r.method) << " noenhanced title '" << r.preset
-       << " " << r.method << "'";
+       << r.method << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, r.method) << " noenhanced title '"
+       << r.preset << " " << r.method << "'";
   }
   gp << "\nset output '" << (dir / "hydrostatic.png").string() << "'\nset multiplot layout 1,2\n"
      << "set title 'Density against depth'\nset xlabel 'rho / rho0'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
