@@ -18,6 +18,7 @@ struct AdaptiveStats {
   int merges = 0;        // pairs merged this step
   int split_wanted = 0;  // particles whose decision was SPLIT (including ones with no room)
   int merge_wanted = 0;  // particles whose decision was MERGE (including unpaired ones)
+  int split_passes = 1;  // decisions this step: foveated adds split passes after a saccade
   GazeMode gaze_mode = GazeMode::None;
   // foveated: what the eye gets (perceptual_budget.h), measured after the step's splits; zero
   // (and -1) for the thesis's methods.

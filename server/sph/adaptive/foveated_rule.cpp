@@ -31,6 +31,7 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
     const DecisionCounts more = decideFoveated(sim, in.camera, gx, gy, in.config, true,
                                                changes.decisions(sim.particles().size()), scratch_, view);
     stats.split_wanted += more.split_wanted;
+    ++stats.split_passes;
     stats.splits += changes.applySplits(sim);
   }
   const PerceptualBudget eye = meter_.measure(sim.particles(), sim.params(), in.camera, gx, gy, in.config);
