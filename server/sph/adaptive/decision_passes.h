@@ -71,9 +71,8 @@ struct DecisionPassForms {
                                   const Boundary& boundary);
   DecisionCounts (*characterDecisions)(const SurfaceArrays& arrays, std::size_t begin, std::size_t end,
                                        const CharacterField& field);
-  DecisionCounts (*gazeDecisions)(const GazeCircle& gaze, const float* xyz, const float* radius,
-                                  const Level* level, std::int8_t* out, std::size_t begin, std::size_t end,
-                                  bool hybrid);
+  DecisionCounts (*gazeDecisions)(const GazeCircle& gaze, const float* xyz, const float* radius, const Level* level,
+                                  std::int8_t* out, std::size_t begin, std::size_t end, bool hybrid);
 };
 
 namespace scalar {
