@@ -371,6 +371,15 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
       }
       line += fmt::format(", over the perceptual budget at most {:.2f} % of the visible", 100.0 * worst_over_budget_);
     }
+    // The last step's particle under the gaze against what the eye resolves there
+    // (adaptive/perceptual_budget.h).
+    const sph::AdaptiveController* controller = session_.controller();
+    if (controller != nullptr && controller->lastStats().fovea_level >= 0) {
+      const sph::AdaptiveStats& stats = controller->lastStats();
+      line += fmt::format(", under the gaze {} {:.1f}' wide, the eye resolves {:.2f}'",
+                          sph::levelName(sph::asLevel(stats.fovea_level)), stats.fovea_width_arcmin,
+                          stats.fovea_mar_arcmin);
+    }
   }
   if (options_.insecure) line += "; INSECURE: bound beyond loopback without CURVE (--insecure)";
   std::lock_guard lock(status_mutex_);

@@ -88,14 +88,14 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
        [](const RunSummary& r) {
          return fixed(r.summary.mean_levels[1], 0) + " / " + fixed(r.summary.mean_levels[0], 0);
        }},
-      {"Mean L2 / L3 / ... (foveated)",
+      {"Mean L0 / L1 / ...",
        [](const RunSummary& r) {
          std::string text;
-         for (int k = 2; k < r.summary.levels; ++k) {
-           if (k > 2) text += " / ";
+         for (int k = 0; k < r.summary.levels; ++k) {
+           if (k > 0) text += " / ";
            text += fixed(r.summary.mean_levels[static_cast<std::size_t>(k)], 0);
          }
-         return text.empty() ? std::string("-") : text;
+         return text;
        }},
       {"Mean particles",
        [](const RunSummary& r) {
@@ -103,8 +103,17 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
          for (const double c : r.summary.mean_levels) n += c;
          return fixed(n, 0);
        }},
-      {"Perceptual budget exceeded (max share of visible)",
-       [](const RunSummary& r) { return fixed(100.0 * r.summary.max_over_budget_share, 2) + " %"; }},
+      {"Perceptual budget exceeded (mean / max share of visible)",
+       [](const RunSummary& r) {
+         return fixed(100.0 * r.summary.mean_over_budget_share, 2) + " / " +
+                fixed(100.0 * r.summary.max_over_budget_share, 2) + " %";
+       }},
+      {"Under the gaze: L0 share, width / MAR (arcmin)",
+       [](const RunSummary& r) {
+         if (r.summary.gaze_on_water_frames == 0) return std::string("-");
+         return fixed(100.0 * r.summary.gaze_finest_share, 0) + " %, " + fixed(r.summary.mean_fovea_width_arcmin, 1) +
+                " / " + fixed(r.summary.mean_fovea_mar_arcmin, 2);
+       }},
       {"Mean neighbours", [](const RunSummary& r) { return fixed(r.summary.mean_neighbors, 1); }},
       {"rho/rho0 mean / max",
        [](const RunSummary& r) {
@@ -142,6 +151,16 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
         md += methodRow("Total / regular", [&](const RunSummary& r) {
           return fixed(r.summary.total.mean / regular->summary.total.mean, 2);
         });
+        // What a particle costs against a regular one: the step's time over the mean particle count.
+        const auto perParticle = [](const RunSummary& r) {
+          double n = 0.0;
+          for (const double c : r.summary.mean_levels) n += c;
+          return n > 0.0 ? r.summary.total.mean / n : 0.0;
+        };
+        if (perParticle(*regular) > 0.0) {
+          md += methodRow("Cost per particle / regular's",
+                          [&](const RunSummary& r) { return fixed(perParticle(r) / perParticle(*regular), 2); });
+        }
       }
       const RunSummary* any = nullptr;
       for (const auto& m : methods) any = any ? any : find(scene, preset, m);

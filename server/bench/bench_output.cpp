@@ -53,13 +53,26 @@ Summary summarize(const RunResult& run) {
     for (std::size_t k = 0; k < r.by_level.size(); ++k) s.mean_levels[k] += static_cast<double>(r.by_level[k]) / n;
     if (r.visible > 0) {
       s.budget_measured = true;
-      s.max_over_budget_share = std::max(s.max_over_budget_share, static_cast<double>(r.over_budget) / r.visible);
+      const double share = static_cast<double>(r.over_budget) / r.visible;
+      s.max_over_budget_share = std::max(s.max_over_budget_share, share);
+      s.mean_over_budget_share += share / n;
+    }
+    if (r.fovea_level >= 0) {
+      ++s.gaze_on_water_frames;
+      s.gaze_finest_share += r.fovea_level == 0;
+      s.mean_fovea_width_arcmin += r.fovea_width_arcmin;
+      s.mean_fovea_mar_arcmin += r.fovea_mar_arcmin;
     }
     s.mean_neighbors += r.mean_neighbors / n;
     s.mean_density_ratio += r.mean_density_ratio / n;
     s.max_density_ratio = std::max(s.max_density_ratio, r.max_density_ratio);
     s.nan_values += r.nan_values;
     s.outside_box += r.outside_box;
+  }
+  if (s.gaze_on_water_frames > 0) {
+    s.gaze_finest_share /= s.gaze_on_water_frames;
+    s.mean_fovea_width_arcmin /= s.gaze_on_water_frames;
+    s.mean_fovea_mar_arcmin /= s.gaze_on_water_frames;
   }
   return s;
 }
@@ -87,6 +100,11 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["wall_seconds_per_simulated_second"] = s.wall_per_simulated;
   j["mean_levels"] = std::vector<double>(s.mean_levels.begin(), s.mean_levels.begin() + s.levels);
   j["max_over_budget_share"] = s.max_over_budget_share;
+  j["mean_over_budget_share"] = s.mean_over_budget_share;
+  j["gaze_on_water_frames"] = s.gaze_on_water_frames;
+  j["gaze_finest_share"] = s.gaze_finest_share;
+  j["mean_fovea_width_arcmin"] = s.mean_fovea_width_arcmin;
+  j["mean_fovea_mar_arcmin"] = s.mean_fovea_mar_arcmin;
   j["mean_neighbors_per_particle"] = s.mean_neighbors;
   j["neighbor_list_stride"] = run.neighbor_stride;
   j["mean_density_over_rho0"] = s.mean_density_ratio;
@@ -125,18 +143,20 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
   out << "frame,sim_time,particles,levels,neighbor_ms,density_pressure_ms,accel_integrate_collide_ms,"
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
          "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
-         "divergence_iterations,placement_iterations,visible,over_budget\n";
+         "divergence_iterations,placement_iterations,visible,over_budget,fovea_level,fovea_width_arcmin,"
+         "fovea_mar_arcmin\n";
   char line[640];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
-    std::snprintf(
-        line, sizeof line,
-        "%d,%.4f,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%d,%d\n",
-        r.frame, r.sim_time, r.particles(), levelCounts(r).c_str(), r.ms.neighbor_ms, r.ms.density_pressure_ms,
-        r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms, steps_per_s, r.mean_neighbors,
-        r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges, sph::gazeModeName(r.gaze_mode), r.merge_unpaired,
-        r.rms_speed, r.volume, r.substeps, r.solver_iterations, r.divergence_iterations, r.placement_iterations,
-        r.visible, r.over_budget);
+    std::snprintf(line, sizeof line,
+                  "%d,%.4f,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%d,%d,"
+                  "%d,%.3f,%.3f\n",
+                  r.frame, r.sim_time, r.particles(), levelCounts(r).c_str(), r.ms.neighbor_ms,
+                  r.ms.density_pressure_ms, r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms,
+                  steps_per_s, r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
+                  sph::gazeModeName(r.gaze_mode), r.merge_unpaired, r.rms_speed, r.volume, r.substeps,
+                  r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.visible, r.over_budget,
+                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin);
     out << line;
   }
 }
@@ -172,13 +192,20 @@ std::string framesText(const RunResult& run) {
 // The mean particles per level, "L0 a, L1 b, ...", and the foveated method's perceptual budget.
 static std::string levelText(const Summary& s) {
   std::string text;
-  char buf[64];
+  char buf[160];
   for (int k = 0; k < s.levels; ++k) {
     std::snprintf(buf, sizeof buf, "%sL%d %.0f", k == 0 ? "" : ", ", k, s.mean_levels[static_cast<std::size_t>(k)]);
     text += buf;
   }
   if (s.budget_measured) {
-    std::snprintf(buf, sizeof buf, " (over budget at most %.2f %%)", 100.0 * s.max_over_budget_share);
+    std::snprintf(buf, sizeof buf, " (over budget mean %.2f %%, at most %.2f %%)", 100.0 * s.mean_over_budget_share,
+                  100.0 * s.max_over_budget_share);
+    text += buf;
+  }
+  if (s.gaze_on_water_frames > 0) {
+    std::snprintf(buf, sizeof buf, " | under the gaze: L0 in %.0f %% of %d frames, %.1f' wide against MAR %.2f'",
+                  100.0 * s.gaze_finest_share, s.gaze_on_water_frames, s.mean_fovea_width_arcmin,
+                  s.mean_fovea_mar_arcmin);
     text += buf;
   }
   return text;

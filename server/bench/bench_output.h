@@ -23,9 +23,16 @@ struct Summary {
   int levels = sph::kMinLevels;                       // the run's level count
   std::array<double, sph::kMaxLevels> mean_levels{};  // mean particles per level, L0 first
   double mean_neighbors = 0.0;
-  // foveated: the largest share of visible particles over the perceptual budget in any frame.
+  // foveated: the largest and the mean share of visible particles over the perceptual budget in a
+  // frame, and of the frames where the gaze fell on water, the share that found the finest level
+  // there, with the mean angular width of that particle and the eye's MAR there (arcmin).
   double max_over_budget_share = 0.0;
+  double mean_over_budget_share = 0.0;
   bool budget_measured = false;  // some frame counted visible particles (foveated)
+  int gaze_on_water_frames = 0;
+  double gaze_finest_share = 0.0;
+  double mean_fovea_width_arcmin = 0.0;
+  double mean_fovea_mar_arcmin = 0.0;
   double mean_density_ratio = 0.0, max_density_ratio = 0.0;
   std::size_t nan_values = 0, outside_box = 0;
 };

@@ -124,6 +124,9 @@ void SceneRun::stepFrame() {
     r.gaze_mode = controller_->lastStats().gaze_mode;
     r.visible = controller_->lastStats().visible;
     r.over_budget = controller_->lastStats().over_budget;
+    r.fovea_level = controller_->lastStats().fovea_level;
+    r.fovea_width_arcmin = controller_->lastStats().fovea_width_arcmin;
+    r.fovea_mar_arcmin = controller_->lastStats().fovea_mar_arcmin;
   }
   r.frame = static_cast<int>(result_.records.size()) + 1;
   r.sim_time = sim_->time();

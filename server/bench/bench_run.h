@@ -39,10 +39,13 @@ struct FrameRecord {
   int merges = 0;
   int merge_unpaired = 0;  // particles flagged MERGE that found no partner
   sph::GazeMode gaze_mode = sph::GazeMode::None;
-  // foveated: the perceptual budget (adaptive/foveated.h): visible particles, and those wider than
-  // the eye allows at their eccentricity.
+  // foveated: what the eye gets (adaptive/perceptual_budget.h): visible particles, those wider
+  // than the eye's acuity at their eccentricity allows, and the particle under the gaze.
   int visible = 0;
   int over_budget = 0;
+  int fovea_level = -1;  // -1: the gaze falls on no water
+  double fovea_width_arcmin = 0.0;
+  double fovea_mar_arcmin = 0.0;
 };
 
 struct RunResult {

@@ -90,9 +90,12 @@ void AdaptiveController::apply(Simulation& sim) {
       stats_.split_wanted += more.split_wanted;
       stats_.splits += applySplitMerge(sim, decision_, partner_, keep_, split_list_).splits;
     }
-    stats_.visible = view.visible;
-    stats_.over_budget = view.over_budget;
-    stats_.fovea_level = view.fovea_level;
+    const PerceptualBudget eye = budget_meter_.measure(sim.particles(), sim.params(), camera_, gx, gy, config_);
+    stats_.visible = eye.visible;
+    stats_.over_budget = eye.over_budget;
+    stats_.fovea_level = eye.gaze_level;
+    stats_.fovea_width_arcmin = eye.gaze_width_arcmin;
+    stats_.fovea_mar_arcmin = eye.gaze_mar_arcmin;
     return;
   }
   finish(sim, decideThesis(sim, mode), mode);

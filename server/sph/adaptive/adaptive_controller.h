@@ -10,6 +10,7 @@
 
 #include "sph/adaptive/foveated.h"
 #include "sph/adaptive/method.h"
+#include "sph/adaptive/perceptual_budget.h"
 #include "sph/adaptive/split_merge.h"
 #include "sph/camera.h"
 #include "sph/simulation.h"
@@ -22,11 +23,14 @@ struct AdaptiveStats {
   int split_wanted = 0;  // particles whose decision was SPLIT (including ones with no room)
   int merge_wanted = 0;  // particles whose decision was MERGE (including unpaired ones)
   GazeMode gaze_mode = GazeMode::None;
-  // foveated: what the eye saw (adaptive/foveated.h); zero for the thesis's methods.
+  // foveated: what the eye gets (perceptual_budget.h), measured after the step's splits; zero
+  // (and -1) for the thesis's methods.
   int visible = 0;
   int over_budget = 0;
-  int fovea_level = -1;  // the level at the gaze point (FoveatedView::fovea_level)
-  double gaze_x = 0.5;   // the gaze point the step used (normalized, origin top left)
+  int fovea_level = -1;             // the level of the particle under the gaze; -1: none
+  double fovea_width_arcmin = 0.0;  // that particle's angular width; 0: the gaze falls on no water
+  double fovea_mar_arcmin = 0.0;    // the eye's minimum angle of resolution there
+  double gaze_x = 0.5;              // the gaze point the step used (normalized, origin top left)
   double gaze_y = 0.5;
   double gaze_age_s = 0.0;
 };
@@ -74,6 +78,7 @@ class AdaptiveController : public AdaptiveStep {
   PartnerScratch partner_scratch_;
   StragglerScratch stragglers_;
   FoveatedScratch foveated_;
+  PerceptualBudgetMeter budget_meter_;
 };
 
 // nullptr for Method::Regular.

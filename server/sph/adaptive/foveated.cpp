@@ -3,30 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "sph/adaptive/display_geometry.h"
 #include "sph/thread_share.h"
 
 namespace sph {
 
 namespace {
 
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 // The gaze point's water: the nearest particle within this eccentricity.
 constexpr float kFoveaDeg = 1.0f;
-
-// Where the user sees a screen point: its direction from the eye, the display `tan_half` wide
-// (tan of half its horizontal angle) and `aspect` wide per high.
-Eigen::Vector3f screenDirection(float sx, float sy, float tan_half, float aspect) {
-  return {(2.0f * sx - 1.0f) * tan_half, (1.0f - 2.0f * sy) * tan_half / aspect, 1.0f};
-}
-
-float angleDeg(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
-  return static_cast<float>(kDegrees) * std::atan2(a.cross(b).norm(), a.dot(b));
-}
 
 // How far a particle's neighbours spread across their thinnest direction, against their mean
 // spread: sqrt(smallest eigenvalue / mean eigenvalue) of the second moment of their offsets about
@@ -65,9 +54,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto rest_density = static_cast<float>(sim.params().rest_density);
   const Projector projector(camera);
   const float aspect = static_cast<float>(projector.aspect());
-  const float tan_half = config.foveated_display_fov_deg > 0.0
-                             ? static_cast<float>(std::tan(0.5 * config.foveated_display_fov_deg / kDegrees))
-                             : static_cast<float>(1.0 / camera.projection(0, 0));
+  const float tan_half = displayTanHalf(config, camera);
   const Eigen::Vector3f gaze_dir =
       screenDirection(static_cast<float>(gaze_x), static_cast<float>(gaze_y), tan_half, aspect);
   const Eigen::Vector4f depth_row = -camera.view.row(2).cast<float>();  // view-space distance
@@ -88,22 +75,14 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const int thin_level = std::clamp(config.foveated_thin_level, 0, coarsest);
 
   scratch.allowed.resize(n);
-  scratch.budget.resize(n);
   scratch.depth.resize(n);
-  scratch.visible.resize(n);
   scratch.finest_near.resize(n);
   const float last_fovea = scratch.fovea_depth;
   float fovea = std::numeric_limits<float>::infinity();  // the threads' nearest, combined
-  // The visible particle the gaze falls on: of those whose disc covers the gaze point the nearest
-  // the eye (ties to the lower index), combined.
-  float gazed_depth = std::numeric_limits<float>::infinity();
-  std::size_t gazed = n;
-  int split_wanted = 0, merge_wanted = 0, visible = 0, over_budget = 0, still_coarse = 0;
-#pragma omp parallel reduction(+ : split_wanted, merge_wanted, visible, over_budget, still_coarse)
+  int split_wanted = 0, merge_wanted = 0, still_coarse = 0;
+#pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse)
   {
     float nearest = std::numeric_limits<float>::infinity();
-    float own_gazed_depth = std::numeric_limits<float>::infinity();
-    std::size_t own_gazed = n;
     const ThreadShare share = threadShare(n);
     // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
     // nearest water at the gaze point.
@@ -116,33 +95,20 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float scaled_n = p.normal_length[i] * p.support[i] / large_support;
       const float d = scaled_n >= surface_threshold ? 0.0f : p.surface_hop[i];
       p.surface_distance[i] = d;
-      const bool hidden = d >= hidden_depth;
       scratch.depth[i] = depth;
-      scratch.visible[i] = static_cast<std::int8_t>(on_screen && !hidden);
       const float inf = std::numeric_limits<float>::infinity();
       // The periphery gain spares the particle the gaze falls on (its disc, of this angular radius
       // on the display near the line of sight, covers the gaze point): the governor coarsens the
       // periphery, never the gaze point.
-      const float disc_deg = static_cast<float>(kDegrees) * 2.0f * tan_half * disc.radius;
+      const float disc_deg = static_cast<float>(kDegreesPerRadian) * 2.0f * tan_half * disc.radius;
       const bool gazed_on = e <= disc_deg;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
       // apart from the distance ratio, 0 behind the eye).
       scratch.allowed[i] = on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
-      scratch.budget[i] = on_screen ? q * (1.0f + mar_gain * e) : inf;
       if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
-      if (on_screen && !hidden && gazed_on && depth < own_gazed_depth) {  // ascending i: a tie keeps the lower index
-        own_gazed_depth = depth;
-        own_gazed = i;
-      }
     }
 #pragma omp critical(sph_fovea_depth)
-    {
-      fovea = std::min(fovea, nearest);
-      if (own_gazed_depth < gazed_depth || (own_gazed_depth == gazed_depth && own_gazed < gazed)) {
-        gazed_depth = own_gazed_depth;
-        gazed = own_gazed;
-      }
-    }
+    fovea = std::min(fovea, nearest);
 #pragma omp barrier
     // The water at the gaze point: this step's where the gaze falls on water, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
@@ -162,7 +128,6 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // In finest widths at the gaze; unseen water (inf) stays inf whatever its distance.
       const bool seen = std::isfinite(scratch.allowed[i]);
       const float allowed = seen ? scratch.allowed[i] * distance_ratio : scratch.allowed[i];
-      const float budget = seen ? scratch.budget[i] * distance_ratio : scratch.budget[i];
       const float d = p.surface_distance[i];
       int acuity = 0;
       while (acuity < coarsest && width[acuity + 1] <= allowed) ++acuity;
@@ -214,22 +179,16 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         decision = kMerge;
       }
       out[i] = decision;
-      const int shown = level - (decision == kSplit);  // what the frame after this step shows
-      if (scratch.visible[i] != 0) {
-        ++visible;
-        over_budget += width[shown] > budget;
-        still_coarse += shown > acuity;
-      }
+      // Seen water still coarser than the eye allows once this split is made (the frame after
+      // this step shows level - 1).
+      if (seen && d < hidden_depth) still_coarse += level - (decision == kSplit) > acuity;
       split_wanted += decision == kSplit;
       merge_wanted += decision == kMerge;
     }
   }
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
-  view.visible = visible;
-  view.over_budget = over_budget;
   view.still_coarse = still_coarse;
   view.fovea_depth = scratch.fovea_depth;
-  view.fovea_level = gazed < n ? levelIndex(p.level[gazed]) - (out[gazed] == kSplit) : -1;
   return {split_wanted, merge_wanted};
 }
 

@@ -32,28 +32,20 @@
 
 namespace sph {
 
-// What the last decision saw, for the bench's perceptual budget and the server's status.
+// What the last decision saw, for the controller's further split passes. What the eye gets is
+// measured apart from the rule (perceptual_budget.h).
 struct FoveatedView {
-  int visible = 0;  // particles in front of the eye, on the display and not hidden under water
-  // Visible ones wider than q MAR(e) / MAR(0) finest particles at the gaze (at periphery gain 1,
-  // whatever the gain in force) once this decision's splits are made.
-  int over_budget = 0;
-  // Visible ones coarser than the eye allows (at the periphery gain in force) once this
-  // decision's splits are made: a further split pass in the step is for them.
+  // Seen particles (on the display, not hidden under water) coarser than the eye allows (at the
+  // periphery gain in force) once this decision's splits are made: a further split pass in the
+  // step is for them.
   int still_coarse = 0;
   float fovea_depth = 0.0f;  // distance of the water at the gaze point, metres
-  // The level the eye finds at the gaze point once this decision's splits are made: of the visible
-  // particle nearest the eye whose disc covers the gaze point; -1 where the gaze falls on no
-  // visible water.
-  int fovea_level = -1;
 };
 
 // Per-particle scratch of the decision, kept between steps so the step does not allocate.
 struct FoveatedScratch {
-  std::vector<float> allowed;  // the width the eye allows, in finest particles at the gaze point
-  std::vector<float> budget;   // the same at periphery gain 1 (the perceptual budget)
-  std::vector<float> depth;    // view-space distance
-  std::vector<std::int8_t> visible;
+  std::vector<float> allowed;            // the width the eye allows, in finest particles at the gaze point
+  std::vector<float> depth;              // view-space distance
   std::vector<std::int8_t> finest_near;  // the finest level among a particle and its neighbours
   float fovea_depth = 0.0f;              // the last step's, 0 before the first
 };
