@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "sph/adaptive/display_geometry.h"
 #include "sph/adaptive/fovea_rings.h"
 
 namespace app {
@@ -22,6 +23,8 @@ net::FoveationEcho foveationEcho(const SimSession& session, double gain_ceiling)
   echo.periphery_gain_ceiling = static_cast<float>(gain_ceiling);
   echo.visible = static_cast<std::uint32_t>(std::max(stats.visible, 0));
   echo.over_budget = static_cast<std::uint32_t>(std::max(stats.over_budget, 0));
+  echo.fovea_width_arcmin = static_cast<float>(stats.fovea_width_arcmin);
+  echo.fovea_mar_arcmin = static_cast<float>(stats.fovea_mar_arcmin);
   // Each level's width in finest particles, as decideFoveated measures it.
   const sph::SimParams& params = session.sim().params();
   const auto levels = params.levelProps();

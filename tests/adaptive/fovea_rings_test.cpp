@@ -98,14 +98,4 @@ TEST(FoveaRings, RingsWidenAsQualityAndGainFall) {
   EXPECT_GT(at_gaze[1], 0.0f);
 }
 
-TEST(FoveaRings, TheCameraFieldOfViewStandsInWhenTheDisplayHasNone) {
-  sph::AdaptiveConfig c;
-  sph::ScreenCamera camera;
-  camera.projection = sph::perspective(45.0, 16.0 / 9.0, 0.05, 20.0);
-  c.foveated_display_fov_deg = 0.0;
-  EXPECT_NEAR(sph::displayTanHalf(c, camera), 1.0 / camera.projection(0, 0), 1e-12);
-  c.foveated_display_fov_deg = 40.0;
-  EXPECT_NEAR(sph::displayTanHalf(c, camera), std::tan(20.0 / kDeg), 1e-12);
-}
-
 }  // namespace

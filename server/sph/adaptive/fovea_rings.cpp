@@ -23,17 +23,12 @@ double levelOnsetEccentricityDeg(const AdaptiveConfig& config, double width) {
   return per_degree > 0.0 ? excess / per_degree : std::numeric_limits<double>::infinity();
 }
 
-double displayTanHalf(const AdaptiveConfig& config, const ScreenCamera& camera) {
-  if (config.foveated_display_fov_deg > 0.0) return std::tan(0.5 * config.foveated_display_fov_deg * kRadiansPerDegree);
-  return 1.0 / camera.projection(0, 0);
-}
-
 double eccentricityRadiusOnScreen(double e_deg, double tan_half, double gaze_x, double gaze_y) {
   if (!(e_deg > 0.0)) return 0.0;
   if (!(e_deg < 180.0) || !(tan_half > 0.0)) return kOffScreenRingRadius;
   // The display as the plane z = 1 in front of the eye: the gaze direction p0 there, and one
   // viewport width along the screen is 2 tan_half along the plane in any direction (the aspect
-  // ratio cancels, as in foveated.cpp's screenDirection).
+  // ratio cancels, as in display_geometry.h's screenDirection).
   const double px = (2.0 * gaze_x - 1.0) * tan_half;
   const double py = (1.0 - 2.0 * gaze_y) * tan_half;  // sign only: the sum runs over all directions
   const double a = std::sqrt(px * px + py * py + 1.0);

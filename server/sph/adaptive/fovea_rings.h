@@ -1,6 +1,6 @@
 // Where the foveated method lets each coarser level begin around the gaze point, as circles on the
 // screen, so a viewer can draw what the server used. Pure functions of the settings, the level
-// widths and the display's field of view: the same rule as decideFoveated (adaptive/foveated.h),
+// widths and the display's field of view (displayTanHalf, adaptive/display_geometry.h): the same rule as decideFoveated (adaptive/foveated.h),
 // a particle at the fovea's depth at eccentricity e may be q (1 + g (m / w0) e) finest widths wide.
 #pragma once
 
@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "sph/adaptive/method.h"
-#include "sph/camera.h"
 
 namespace sph {
 
@@ -19,10 +18,6 @@ inline constexpr double kOffScreenRingRadius = 8.0;
 // The eccentricity, degrees, at which a level `width` finest particles wide begins for a particle
 // at the fovea's depth: (width / q - 1) / (g m / w0), 0 where q alone allows it.
 double levelOnsetEccentricityDeg(const AdaptiveConfig& config, double width);
-
-// tan of half the display's horizontal angle as the user sees it: the configured display field of
-// view, or the camera's own when that is 0 (as decideFoveated takes it).
-double displayTanHalf(const AdaptiveConfig& config, const ScreenCamera& camera);
 
 // The radius, in viewport widths, of the circle standing in for the screen points `e_deg` degrees
 // from the gaze direction through (gaze_x, gaze_y) (normalized, origin top left). Those points
