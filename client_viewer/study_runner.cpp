@@ -107,6 +107,11 @@ void StudyRunner::startInterval(Clock::time_point now) {
 
 void StudyRunner::onReply(const gsph::v1::ControlReply& reply, Clock::time_point now) {
   if (pending_.erase(reply.request_id()) == 0 || done()) return;
+  if (!reply.ok() && phase_ == Phase::kCheck) {
+    // Not connected yet (the server may still be starting): ask again shortly, until kServerWait.
+    status_retry_at_ = now + kStatusRetry;
+    return;
+  }
   if (!reply.ok()) return fail("the server refused a request: " + reply.error());
   if (reply.request_id() == reset_request_) restart_step_ = reply.status().step();
   if (phase_ == Phase::kCheck) {
@@ -144,6 +149,12 @@ void StudyRunner::update(Clock::time_point now, const DecodedFrame* frame, bool 
   const bool waiting = phase_ == Phase::kCheck || phase_ == Phase::kSetup || phase_ == Phase::kWaitRestart ||
                        phase_ == Phase::kWaitResume;
   if (waiting && now - phase_start_ > kServerWait) return fail("no answer or no restarted frame from the server");
+  if (phase_ == Phase::kCheck && status_retry_at_ && now >= *status_retry_at_) {
+    status_retry_at_.reset();
+    gsph::v1::Control request;
+    request.mutable_status();
+    send(std::move(request));
+  }
   const std::string& scene = plan_.scenes[trials_.empty() ? 0 : trials_[trial_].scene];
   switch (phase_) {
     case Phase::kWaitRestart:

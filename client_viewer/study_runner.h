@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ class StudyRunner {
   // How long a control reply or the restarted segment's first frame may take before the study
   // stops with an error.
   static constexpr auto kServerWait = std::chrono::seconds(60);
+  static constexpr auto kStatusRetry = std::chrono::milliseconds(200);
 
   enum class Screen { kBlank, kFrames, kQuestion, kDone };
 
@@ -81,6 +83,7 @@ class StudyRunner {
   int interval_ = 0;
   std::set<std::uint64_t> pending_;  // request ids awaiting their reply
   std::uint64_t reset_request_ = 0;
+  std::optional<Clock::time_point> status_retry_at_;  // the first status request failed: ask again
   std::int64_t restart_step_ = 0;  // the step count the reset left, from its reply
   Clock::time_point phase_start_{};
   TrialRecord current_;
