@@ -84,14 +84,22 @@ void StudyRunner::startInterval(Clock::time_point now) {
     current_.trial = trials_[trial_];
   }
   const StudyCondition& k = condition();
-  gsph::v1::Control pause, load, method, reset;
+  const std::string& scene = plan_.scenes[trials_[trial_].scene];
+  gsph::v1::Control pause;
   pause.mutable_pause();
-  load.mutable_load_scene()->set_scene(plan_.scenes[trials_[trial_].scene]);
-  method.mutable_set_method()->set_method(k.method);
-  reset.mutable_reset();
   send(std::move(pause));
-  send(std::move(load));
-  send(std::move(method));
+  // Every restart fills the water and lets it settle (seconds for a big scene): only what differs
+  // from the server's state is sent, and the scene restarts once at most (finishSetup).
+  if (server_.scene() != scene) {
+    gsph::v1::Control load;
+    load.mutable_load_scene()->set_scene(scene);
+    send(std::move(load));
+  }
+  if (server_.method() != k.method) {
+    gsph::v1::Control method;
+    method.mutable_set_method()->set_method(k.method);
+    send(std::move(method));
+  }
   if (!baseline_.empty()) {
     gsph::v1::Control parameters;
     auto& values = *parameters.mutable_set_parameters()->mutable_values();
@@ -99,9 +107,24 @@ void StudyRunner::startInterval(Clock::time_point now) {
     for (const auto& [key, value] : k.parameters) values[key] = value;
     send(std::move(parameters));
   }
-  reset_request_ = client_.sendControl(std::move(reset));  // the same start whatever the method's change did
-  pending_.insert(reset_request_);
+  reset_sent_ = false;
   phase_ = Phase::kSetup;
+  phase_start_ = now;
+}
+
+void StudyRunner::finishSetup(Clock::time_point now) {
+  // A load or a change of levels restarted the scene while paused (step and sim time 0): that is
+  // the segment's start. Otherwise restart it, so every interval runs from the same start.
+  const bool fresh = server_.step() == 0 && server_.sim_time() == 0.0;
+  if (!fresh && !reset_sent_) {
+    gsph::v1::Control reset;
+    reset.mutable_reset();
+    send(std::move(reset));
+    reset_sent_ = true;
+    return;
+  }
+  restart_step_ = server_.step();
+  phase_ = Phase::kWaitRestart;
   phase_start_ = now;
 }
 
@@ -113,15 +136,12 @@ void StudyRunner::onReply(const gsph::v1::ControlReply& reply, Clock::time_point
     return;
   }
   if (!reply.ok()) return fail("the server refused a request: " + reply.error());
-  if (reply.request_id() == reset_request_) restart_step_ = reply.status().step();
+  server_ = reply.status();  // each reply's status is the state after its request
   if (phase_ == Phase::kCheck) {
     phase_start_ = now;
     return checkServer(reply.status());
   }
-  if (phase_ == Phase::kSetup && pending_.empty()) {
-    phase_ = Phase::kWaitRestart;
-    phase_start_ = now;
-  }
+  if (phase_ == Phase::kSetup && pending_.empty()) finishSetup(now);
 }
 
 void StudyRunner::recordFrame(const DecodedFrame& frame) {

@@ -61,6 +61,7 @@ class StudyRunner {
 
   void checkServer(const gsph::v1::ServerStatus& status);
   void startInterval(Clock::time_point now);
+  void finishSetup(Clock::time_point now);
   void send(gsph::v1::Control request);
   const StudyCondition& condition() const;
   void fail(const std::string& why);
@@ -82,9 +83,10 @@ class StudyRunner {
   std::size_t trial_ = 0;
   int interval_ = 0;
   std::set<std::uint64_t> pending_;  // request ids awaiting their reply
-  std::uint64_t reset_request_ = 0;
+  bool reset_sent_ = false;
+  gsph::v1::ServerStatus server_;  // the server's state after the latest request
   std::optional<Clock::time_point> status_retry_at_;  // the first status request failed: ask again
-  std::int64_t restart_step_ = 0;  // the step count the reset left, from its reply
+  std::int64_t restart_step_ = 0;  // the step count the restart left, from its reply
   Clock::time_point phase_start_{};
   TrialRecord current_;
   double first_sim_ = 0.0, last_sim_ = 0.0;
