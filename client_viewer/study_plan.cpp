@@ -104,8 +104,8 @@ StudyPlan parseStudyPlan(const std::string& text, const std::string& source) {
     fail(source, std::string("not valid JSON: ") + e.what());
   }
   if (!j.is_object()) fail(source, "the study must be a JSON object");
-  static const std::set<std::string> kKeys{"name",     "question", "preset",      "scenes",  "comparisons",
-                                           "interval_s", "blank_s", "repetitions", "seed",    "description"};
+  static const std::set<std::string> kKeys{"name",       "question", "preset",      "scenes", "comparisons",
+                                           "interval_s", "blank_s",  "repetitions", "seed",   "description"};
   for (const auto& [key, value] : j.items()) {
     if (kKeys.count(key) == 0) fail(source, "unknown key \"" + key + "\"");
   }

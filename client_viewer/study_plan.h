@@ -44,9 +44,9 @@ struct StudyPlan {
   std::string preset;  // empty: each scene's own
   std::vector<std::string> scenes;
   std::vector<StudyComparison> comparisons;
-  double interval_s = 4.0;  // each interval's wall-clock length
-  double blank_s = 1.0;     // blank screen before and between the intervals
-  int repetitions = 1;      // trials per scene and comparison
+  double interval_s = 4.0;            // each interval's wall-clock length
+  double blank_s = 1.0;               // blank screen before and between the intervals
+  int repetitions = 1;                // trials per scene and comparison
   std::optional<std::uint64_t> seed;  // none: from the clock (written to the output either way)
 };
 

@@ -46,7 +46,8 @@ GazeSummary gazeSummary(const std::array<IntervalRecord, 2>& intervals) {
   if (g.tracking > 0) {
     g.mean_x = sx / g.tracking;
     g.mean_y = sy / g.tracking;
-    g.spread = std::sqrt(std::max(0.0, sxx / g.tracking - g.mean_x * g.mean_x + syy / g.tracking - g.mean_y * g.mean_y));
+    g.spread =
+        std::sqrt(std::max(0.0, sxx / g.tracking - g.mean_x * g.mean_x + syy / g.tracking - g.mean_y * g.mean_y));
   }
   return g;
 }
@@ -62,12 +63,12 @@ void writeTrialRow(std::ostream& out, const StudyPlan& plan, std::uint64_t seed,
   const StudyComparison& c = plan.comparisons[r.trial.comparison];
   const GazeSummary g = gazeSummary(r.intervals);
   const char* answer = plan.question == StudyQuestion::kTwoInterval ? (r.answer == 1 ? "1" : "2")
-                                                                     : (r.answer == 1 ? "same" : "different");
+                                                                    : (r.answer == 1 ? "same" : "different");
   out << r.number << ',' << seed << ',' << field(plan.scenes[r.trial.scene]) << ',' << field(c.name) << ','
       << field(c.reference.label()) << ',' << field(c.test.label()) << ',' << questionName(plan.question) << ','
-      << orderText(r.trial) << ',' << answer << ',' << (r.correct ? 1 : 0) << ',' << number(r.response_s, "%.3f")
-      << ',' << g.frames << ',' << number(g.frames > 0 ? static_cast<double>(g.tracking) / g.frames : 0.0, "%.3f")
-      << ',' << number(g.mean_x) << ',' << number(g.mean_y) << ',' << number(g.spread) << ','
+      << orderText(r.trial) << ',' << answer << ',' << (r.correct ? 1 : 0) << ',' << number(r.response_s, "%.3f") << ','
+      << g.frames << ',' << number(g.frames > 0 ? static_cast<double>(g.tracking) / g.frames : 0.0, "%.3f") << ','
+      << number(g.mean_x) << ',' << number(g.mean_y) << ',' << number(g.spread) << ','
       << number(r.intervals[0].realtime_ratio, "%.3f") << ',' << number(r.intervals[1].realtime_ratio, "%.3f") << '\n';
 }
 

@@ -22,13 +22,15 @@ std::string summaryPathFor(const std::string& csv) {
 
 StudyRunner::StudyRunner(StudyPlan plan, std::string out_path, NetworkClient& client)
     : plan_(std::move(plan)), client_(client) {
-  seed_ = plan_.seed ? *plan_.seed : (static_cast<std::uint64_t>(std::random_device{}()) << 32) ^
-                                         static_cast<std::uint64_t>(Clock::now().time_since_epoch().count());
+  seed_ = plan_.seed ? *plan_.seed
+                     : (static_cast<std::uint64_t>(std::random_device{}()) << 32) ^
+                           static_cast<std::uint64_t>(Clock::now().time_since_epoch().count());
   trials_ = makeTrials(plan_, seed_);
   csv_path_ = out_path.empty() ? plan_.name + "_" + std::to_string(seed_) + ".csv" : out_path;
   summary_path_ = summaryPathFor(csv_path_);
   csv_.open(csv_path_);
   if (!csv_) throw std::runtime_error("cannot write the study's results to " + csv_path_);
+  client_.setControlTimeout(std::chrono::duration_cast<std::chrono::milliseconds>(kServerWait));
   writeTrialHeader(csv_);
   csv_.flush();
   std::fprintf(stderr, "sph_viewer: study %s, %zu trials, seed %llu, results to %s\n", plan_.name.c_str(),

@@ -84,9 +84,9 @@ class StudyRunner {
   int interval_ = 0;
   std::set<std::uint64_t> pending_;  // request ids awaiting their reply
   bool reset_sent_ = false;
-  gsph::v1::ServerStatus server_;  // the server's state after the latest request
+  gsph::v1::ServerStatus server_;                     // the server's state after the latest request
   std::optional<Clock::time_point> status_retry_at_;  // the first status request failed: ask again
-  std::int64_t restart_step_ = 0;  // the step count the restart left, from its reply
+  std::int64_t restart_step_ = 0;                     // the step count the restart left, from its reply
   Clock::time_point phase_start_{};
   TrialRecord current_;
   double first_sim_ = 0.0, last_sim_ = 0.0;

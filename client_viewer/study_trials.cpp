@@ -23,8 +23,8 @@ std::vector<StudyTrial> makeTrials(const StudyPlan& plan, std::uint64_t seed) {
         t.comparison = c;
         t.repetition = r;
         const bool reference_first = below(rng, 2) == 0;
-        t.intervals = reference_first ? std::array{Shown::kReference, Shown::kTest}
-                                      : std::array{Shown::kTest, Shown::kReference};
+        t.intervals =
+            reference_first ? std::array{Shown::kReference, Shown::kTest} : std::array{Shown::kTest, Shown::kReference};
         if (plan.question == StudyQuestion::kSameDifferent && below(rng, 2) == 0) {
           const Shown both = below(rng, 2) == 0 ? Shown::kReference : Shown::kTest;
           t.intervals = {both, both};

@@ -22,7 +22,7 @@ namespace {
 
 constexpr auto kServerSilence = std::chrono::seconds(2);         // then "waiting for server" again
 constexpr auto kMouseGazePeriod = std::chrono::milliseconds(8);  // ~120 Hz at most
-constexpr auto kLogPeriod = std::chrono::seconds(5);              // the method's figures on stderr
+constexpr auto kLogPeriod = std::chrono::seconds(5);             // the method's figures on stderr
 
 double millisSince(std::chrono::steady_clock::time_point t, std::chrono::steady_clock::time_point now) {
   return std::chrono::duration<double, std::milli>(now - t).count();
@@ -297,8 +297,9 @@ void ViewerApp::drawPanel(Clock::time_point now) {
   const NetworkStats stats = client_.stats();
   if (frame_) rates_.frame_age_ms = static_cast<float>(systemMicros() - frame_->send_time_us) / 1000.0f;
   if (show_panel_) panel_.draw(frame_.get(), stats, rates_, options_.mouse_gaze || options_.gaze_at, render_mode_);
-  if (study_ && !study_->prompt().empty()) {
-    drawCentredText(study_->prompt().c_str());
+  if (study_) {
+    // Only the study's own words: a restart's silence is part of the blank, not news.
+    if (!study_->prompt().empty()) drawCentredText(study_->prompt().c_str());
   } else if (!stats.last_frame_arrival) {
     drawCentredText(("waiting for server at " + options_.endpoints.frames).c_str());
   } else if (now - *stats.last_frame_arrival > kServerSilence) {

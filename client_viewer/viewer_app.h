@@ -32,9 +32,9 @@ extern std::atomic<bool> g_stop_requested;
 // The process exit codes of sph_viewer (also in its --help and README).
 enum class ExitCode : int {
   kOk = 0,
-  kStartFailed = 1,    // no display, no OpenGL 3.3, or an endpoint that cannot be connected
-  kUsage = 2,          // bad command line (viewer_options.cpp)
-  kTimeout = 3,        // --timeout passed before --frames frames arrived (a snapshot is still written)
+  kStartFailed = 1,     // no display, no OpenGL 3.3, or an endpoint that cannot be connected
+  kUsage = 2,           // bad command line (viewer_options.cpp)
+  kTimeout = 3,         // --timeout passed before --frames frames arrived (a snapshot is still written)
   kSnapshotFailed = 4,  // the snapshot PNG could not be written
   kStudyFailed = 5      // --study: the server lacks a scene or setting the study names, or refused a request
 };

@@ -304,11 +304,15 @@ void SimLoop::noteCeiling() {
   if (at_ceiling == at_ceiling_) return;
   at_ceiling_ = at_ceiling;
   if (at_ceiling) {
-    spdlog::warn("real-time governor at its ceiling: periphery gain {:.1f}, {:.2f} of real time; the foveated "
-                 "method cannot coarsen further (fewer threads, a smaller scene or a higher q would help)",
-                 governor_.gain(), governor_.realtimeRatio());
-  } else {
+    spdlog::warn(
+        "real-time governor at its ceiling: periphery gain {:.1f}, {:.2f} of real time; the foveated "
+        "method cannot coarsen further (fewer threads, a smaller scene or a higher q would help)",
+        governor_.gain(), governor_.realtimeRatio());
+  } else if (session_.method() == sph::Method::Foveated) {
     spdlog::info("real-time governor below its ceiling again: periphery gain {:.1f}", session_.peripheryGain());
+  } else {
+    spdlog::info("real-time governor below its ceiling again: the method is {} now",
+                 sph::methodName(session_.method()));
   }
 }
 

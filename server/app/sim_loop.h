@@ -43,8 +43,8 @@ struct SimLoopOptions {
   bool velocities = false;
   bool neighbor_counts = false;  // per-particle neighbour counts in frames (viewer's spray)
   int threads = 2;
-  std::string camera_source;       // empty: the most recent pose from any viewer
-  std::int64_t max_steps = 0;      // stop after this many steps of this run (0: run until stopped)
+  std::string camera_source;   // empty: the most recent pose from any viewer
+  std::int64_t max_steps = 0;  // stop after this many steps of this run (0: run until stopped)
   // Milliseconds added to every step, as a slower machine would take them (tests of the real-time
   // governor at its ceiling; 0: none).
   double slow_step_ms = 0.0;

@@ -33,8 +33,8 @@ TEST(FoveaRings, OnsetIsWhereTheAcuityRuleFirstAllowsTheLevel) {
   const sph::AdaptiveConfig c = config(1.5, 2.0);
   for (const double width : {2.0, 4.0, 8.0}) {
     const double e = sph::levelOnsetEccentricityDeg(c, width);
-    const double allowed = c.foveated_quality *
-                           (1 + c.foveated_periphery_gain * c.foveated_mar_slope / c.foveated_mar_w0_deg * e);
+    const double allowed =
+        c.foveated_quality * (1 + c.foveated_periphery_gain * c.foveated_mar_slope / c.foveated_mar_w0_deg * e);
     EXPECT_NEAR(allowed, width, 1e-9 * width);
   }
   // q alone allows a level no wider than q at the gaze point: no ring.

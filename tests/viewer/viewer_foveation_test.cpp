@@ -27,16 +27,16 @@ constexpr auto kWait = 90s;
 
 std::vector<std::string> serverArgs(const std::string& preset, const std::string& method,
                                     std::vector<std::string> extra = {}) {
-  std::vector<std::string> args{SPH_SERVER_PATH, "--scene",  "tiny_pool",   "--scene-dir", SPH_NET_TEST_SCENE_DIR,
-                                "--threads",     "1",        "--preset",    preset,        "--method",
-                                method,          "--status-interval", "0"};
+  std::vector<std::string> args{
+      SPH_SERVER_PATH, "--scene", "tiny_pool", "--scene-dir", SPH_NET_TEST_SCENE_DIR, "--threads", "1",
+      "--preset",      preset,    "--method",  method,        "--status-interval",    "0"};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
 
 std::vector<std::string> endpointArgs(const sph_test::ServerEndpoints& e) {
-  return {"--frames-endpoint", e.frames, "--gaze-endpoint", e.gaze, "--pose-endpoint", e.pose,
-          "--control-endpoint", e.control};
+  return {"--frames-endpoint", e.frames, "--gaze-endpoint",    e.gaze,
+          "--pose-endpoint",   e.pose,   "--control-endpoint", e.control};
 }
 
 std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -200,9 +200,9 @@ TEST(ViewerStudy, BadStudiesAreRefusedBeforeAnythingChanges) {
   std::ofstream(dir + "/unknown.json") << R"({"name": "x", "scenes": ["atlantis"], "comparisons": [
       {"reference": {"method": "regular"}, "test": {"method": "surface"}}]})";
   sph_test::ServerProgram server(serverArgs("thesis", "gaze"), dir + "/server");
-  auto viewer = startViewer(join(endpointArgs(server.endpoints()),
-                                 {"--study", dir + "/unknown.json", "--study-out", dir + "/out.csv"}),
-                            dir + "/viewer.log");
+  auto viewer = startViewer(
+      join(endpointArgs(server.endpoints()), {"--study", dir + "/unknown.json", "--study-out", dir + "/out.csv"}),
+      dir + "/viewer.log");
   const auto code = viewer->waitExit(kWait);
   ASSERT_TRUE(code.has_value()) << readFile(dir + "/viewer.log");
   EXPECT_EQ(*code, 5) << readFile(dir + "/viewer.log");
@@ -232,8 +232,8 @@ TEST(ViewerFoveation, PanelFiguresAndTheServersRingsInASnapshot) {
   EXPECT_NE(panel.find("particles "), std::string::npos) << panel;
 
   gsph::v1::Frame frame;
-  ASSERT_TRUE(nextFrame(server.endpoints().frames, [](const gsph::v1::Frame& f) { return f.fovea_ring_radii_size() > 0; },
-                        frame));
+  ASSERT_TRUE(nextFrame(
+      server.endpoints().frames, [](const gsph::v1::Frame& f) { return f.fovea_ring_radii_size() > 0; }, frame));
   viewer::RgbaImage image;
   std::string error;
   ASSERT_TRUE(viewer::readPng(dir + "/fov.png", image, error)) << error;
@@ -258,6 +258,53 @@ TEST(ViewerFoveation, PanelFiguresAndTheServersRingsInASnapshot) {
   EXPECT_GT(checked, 0) << "no ring of a size to check";
 }
 
+// The foveated method that loses the gaze puts the fovea at the screen's centre: the frames say so,
+// and the rings move there with it.
+TEST(ViewerFoveation, ALostGazeMovesTheFoveaAndItsRingsToTheScreenCentre) {
+  const std::string dir = scratchDir();
+  sph_test::ServerProgram server(serverArgs("pbf", "foveated", {"--realtime", "off"}), dir + "/server");
+  zmq::context_t context;
+  zmq::socket_t gaze(context, zmq::socket_type::pub);
+  gaze.set(zmq::sockopt::linger, 0);
+  gaze.connect(server.endpoints().gaze);
+  std::uint64_t sequence = 0;
+  const auto sendGaze = [&] {
+    gsph::v1::GazeSample sample;
+    sample.set_protocol_version(gsph::v1::PROTOCOL_VERSION_CURRENT);
+    sample.set_source_id("test");
+    sample.set_sequence(++sequence);
+    sample.set_x(0.2f);
+    sample.set_y(0.3f);
+    sample.set_valid(true);
+    sample.set_confidence(1.0f);
+    const std::string bytes = sample.SerializeAsString();
+    gaze.send(zmq::buffer(bytes), zmq::send_flags::dontwait);
+  };
+  gsph::v1::Frame tracked, lost;
+  ASSERT_TRUE(nextFrame(
+      server.endpoints().frames,
+      [&](const gsph::v1::Frame& f) {
+        sendGaze();
+        return f.gaze().mode() == gsph::v1::GAZE_MODE_TRACKING && f.fovea_ring_radii_size() > 0;
+      },
+      tracked))
+      << server.log();
+  EXPECT_NEAR(tracked.gaze().x(), 0.2f, 1e-6);
+  EXPECT_NEAR(tracked.gaze().y(), 0.3f, 1e-6);
+  // No more samples: held for gaze_hold_s, then lost.
+  ASSERT_TRUE(nextFrame(
+      server.endpoints().frames,
+      [](const gsph::v1::Frame& f) { return f.gaze().mode() == gsph::v1::GAZE_MODE_FALLBACK; }, lost))
+      << server.log();
+  EXPECT_EQ(lost.gaze().x(), 0.5f);
+  EXPECT_EQ(lost.gaze().y(), 0.5f);
+  ASSERT_EQ(lost.fovea_ring_radii_size(), tracked.fovea_ring_radii_size());
+  // At the centre the ring is the exact circle, off it the mean of a stretched one: not the same.
+  const int last = lost.fovea_ring_radii_size() - 1;
+  EXPECT_GT(lost.fovea_ring_radii(last), 0.0f);
+  EXPECT_NE(lost.fovea_ring_radii(last), tracked.fovea_ring_radii(last));
+}
+
 TEST(ServerGovernor, OneWarningWhenHeldAtTheCeilingAndOneLineWhenItLeaves) {
   const std::string dir = scratchDir();
   // Every step 40 ms longer than the machine needs: behind real time whatever the machine.
@@ -266,10 +313,11 @@ TEST(ServerGovernor, OneWarningWhenHeldAtTheCeilingAndOneLineWhenItLeaves) {
   ASSERT_TRUE(waitUntil([&] { return server.log().find(warning) != std::string::npos; })) << server.log();
   // Held there for many more governor windows (half a second each): still one line.
   gsph::v1::Frame first, later;
-  ASSERT_TRUE(nextFrame(server.endpoints().frames, [](const auto& f) { return f.step() > 0; }, first));
-  ASSERT_TRUE(nextFrame(server.endpoints().frames,
-                        [&](const auto& f) { return f.sim_time() > first.sim_time() + 0.5 && f.periphery_gain() > 0; },
-                        later));
+  ASSERT_TRUE(nextFrame(
+      server.endpoints().frames, [](const auto& f) { return f.step() > 0; }, first));
+  ASSERT_TRUE(nextFrame(
+      server.endpoints().frames,
+      [&](const auto& f) { return f.sim_time() > first.sim_time() + 0.5 && f.periphery_gain() > 0; }, later));
   EXPECT_EQ(later.periphery_gain(), later.periphery_gain_ceiling());
   EXPECT_EQ(count(server.log(), warning), 1u) << server.log();
   gsph::v1::Control surface;

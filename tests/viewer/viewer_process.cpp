@@ -1,7 +1,7 @@
 #include "viewer_process.h"
 
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "level_colours.h"

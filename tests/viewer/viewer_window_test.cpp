@@ -8,9 +8,9 @@
 #include <string>
 
 #include "camera_reference.h"
+#include "level_colours.h"
 #include "support/reserved_port.h"
 #include "test_frames.h"
-#include "level_colours.h"
 #include "test_publisher.h"
 #include "viewer_process.h"
 
@@ -203,8 +203,7 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
   }
   int coloured = 0;
   for (int y = 0; y < images[0].height; ++y) {
-    for (int x = 0; x < images[0].width; ++x)
-      coloured += isL0(pixel(images[0], x, y)) || isL1(pixel(images[0], x, y));
+    for (int x = 0; x < images[0].width; ++x) coloured += isL0(pixel(images[0], x, y)) || isL1(pixel(images[0], x, y));
   }
   EXPECT_GT(coloured, 2000);  // the cloud is really there
   std::string where;

@@ -16,8 +16,7 @@ constexpr int kDirections = 32;
 }  // namespace
 
 double levelOnsetEccentricityDeg(const AdaptiveConfig& config, double width) {
-  const double per_degree =
-      config.foveated_periphery_gain * config.foveated_mar_slope / config.foveated_mar_w0_deg;
+  const double per_degree = config.foveated_periphery_gain * config.foveated_mar_slope / config.foveated_mar_w0_deg;
   const double excess = width / config.foveated_quality - 1.0;
   if (!(excess > 0.0)) return 0.0;
   return per_degree > 0.0 ? excess / per_degree : std::numeric_limits<double>::infinity();
