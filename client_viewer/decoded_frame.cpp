@@ -176,6 +176,15 @@ bool DecodedFrame::hasExtraLevels() const {
   return false;
 }
 
+std::size_t DecodedFrame::colourLevelCount() const {
+  if (method == gsph::v1::METHOD_FOVEATED) return level_radii.size();
+  std::size_t used = 2;
+  for (std::size_t level = 0; level < level_counts.size(); ++level) {
+    if (level_counts[level] > 0) used = std::max(used, level + 1);
+  }
+  return std::min(used, std::max<std::size_t>(level_radii.size(), 2));
+}
+
 bool GazeOverlay::drawable() const {
   return (mode == gsph::v1::GAZE_MODE_TRACKING || mode == gsph::v1::GAZE_MODE_HOLDING) && radius > 0.0f;
 }

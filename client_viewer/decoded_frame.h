@@ -107,6 +107,10 @@ struct DecodedFrame {
   std::size_t particleCount() const { return positions.size(); }
   // Any particle of a level beyond L0 and L1 (the foveated method's coarser levels).
   bool hasExtraLevels() const;
+  // The levels the colour map spreads over: every declared one under foveated; under the thesis's
+  // methods, which make L0 and L1 only, those two (or more where the frame has particles there),
+  // so their two levels get the map's two ends.
+  std::size_t colourLevelCount() const;
 };
 
 // Fills `out` from `frame`. On failure returns false, sets `error` to a human-readable reason and

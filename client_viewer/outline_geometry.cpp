@@ -106,7 +106,7 @@ void appendGazeOverlay(LineList& lines, const GazeOverlay& gaze, float aspect) {
 void appendFoveaRings(LineList& lines, const DecodedFrame& frame, float aspect) {
   const auto& radii = frame.foveation.ring_radii;
   const bool tracking = frame.gaze.mode == gsph::v1::GAZE_MODE_TRACKING;
-  const std::size_t level_count = std::max(frame.level_radii.size(), radii.size() + 1);
+  const std::size_t level_count = std::max(frame.colourLevelCount(), radii.size() + 1);
   for (std::size_t k = 0; k < radii.size(); ++k) {
     if (!(radii[k] > 0.0f)) continue;
     const LevelRgb c = levelColour(k + 1, level_count);

@@ -39,7 +39,7 @@ class ParticleBuffers {
   float maxSpeed() const { return max_speed_; }
   bool hasSpeed() const { return has_speed_; }
   bool hasNeighbourCounts() const { return has_counts_; }
-  // The levels the frame declares (level_radii), which the colour map spreads over.
+  // The levels the colour map spreads over (DecodedFrame::colourLevelCount).
   std::size_t levelCount() const { return level_count_; }
 
  private:

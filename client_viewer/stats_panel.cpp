@@ -32,7 +32,7 @@ void showParticleCounts(const DecodedFrame& frame) {
 // One swatch per level in its colour (particles mode, the foveated rings), finest first.
 void showLevelLegend(const DecodedFrame& frame) {
   ImGui::TextUnformatted("levels ");
-  const std::size_t count = frame.level_radii.size();
+  const std::size_t count = frame.colourLevelCount();
   for (std::size_t level = 0; level < count; ++level) {
     const LevelRgb c = levelColour(level, count);
     ImGui::SameLine();

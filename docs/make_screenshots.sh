@@ -13,21 +13,21 @@
 # Usage: docs/make_screenshots.sh [build-dir [picture...]], a picture being a scene name or
 # "foveated" (default: all).
 set -euo pipefail
+if [ -z "${DISPLAY:-}" ]; then
+  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" "$0" "$@"
+fi
 build=${1:-build}
 shift || true
 wanted=("$@")
 want() { [ ${#wanted[@]} -eq 0 ] || [[ " ${wanted[*]} " == *" $1 "* ]]; }
 root=$(cd "$(dirname "$0")/.." && pwd)
-if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" "$0" "$@"
-fi
 mkdir -p "$root/docs/screenshots"
 declare -A gaze=(  # where a person would look: at the water
   [dambreak]="0.35 0.62" [dambreak_obstacles]="0.35 0.62" [large_box]="0.5 0.62"
   [small_box]="0.5 0.6" [wave]="0.5 0.62")
 declare -A moment=(  # sim seconds: the surge, the flow past the obstacles, the spreading sheet, waves
-  [dambreak]=1.6 [dambreak_obstacles]=2.0 [large_box]=0.7 [small_box]=1.0 [wave]=3.0 [foveated]=1.6)
-gaze[foveated]=${gaze[dambreak]}
+  [dambreak]=1.6 [dambreak_obstacles]=2.0 [large_box]=0.7 [small_box]=1.0 [wave]=3.0 [foveated]=2.0)
+gaze[foveated]="0.6 0.6"  # on the water, where the rings have room
 server=
 trap '[ -n "$server" ] && kill $server 2>/dev/null || true' EXIT
 for scene in dambreak dambreak_obstacles large_box small_box wave foveated; do

@@ -92,6 +92,16 @@ TEST(LevelColours, AnyNumberOfLevelsFromOneOrderedMap) {
   }
 }
 
+TEST(LevelColours, TheThesisMethodsTwoLevelsTakeTheMapsEnds) {
+  viewer::DecodedFrame f = foveatedFrame();
+  EXPECT_EQ(f.colourLevelCount(), 4u);  // foveated: every declared level
+  f.method = gsph::v1::METHOD_GAZE;
+  f.level_counts = {100, 200, 0, 0};
+  EXPECT_EQ(f.colourLevelCount(), 2u);
+  f.level_counts = {100, 200, 5, 0};  // a level the frame has particles in keeps its own colour
+  EXPECT_EQ(f.colourLevelCount(), 3u);
+}
+
 // Distances from (x, y) of the overlay's vertices, in viewport widths, grouped to 1e-3.
 std::set<int> ringRadii(const viewer::LineList& lines, float x, float y, float aspect) {
   std::set<int> radii;
