@@ -334,7 +334,8 @@ void ViewerApp::writeSnapshot() {
 }
 
 void ViewerApp::logFigures(Clock::time_point now) {
-  if (!frame_ || now < next_log_) return;
+  // A study's log names trials only: an operator's terminal in the participant's view is a cue.
+  if (!frame_ || study_ || now < next_log_) return;
   next_log_ = now + kLogPeriod;
   std::fprintf(stderr, "sph_viewer: %s\n", foveationLogLine(*frame_).c_str());
 }
