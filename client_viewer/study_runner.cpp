@@ -29,7 +29,7 @@ StudyRunner::StudyRunner(StudyPlan plan, std::string out_path, NetworkClient& cl
   csv_path_ = out_path.empty() ? plan_.name + "_" + std::to_string(seed_) + ".csv" : out_path;
   summary_path_ = summaryPathFor(csv_path_);
   csv_.open(csv_path_);
-  if (!csv_) throw std::runtime_error("cannot write the study's results to " + csv_path_);
+  if (!csv_) throw StudyOutputError("cannot write the study's results to " + csv_path_);
   client_.setControlTimeout(std::chrono::duration_cast<std::chrono::milliseconds>(kServerWait));
   writeTrialHeader(csv_);
   csv_.flush();

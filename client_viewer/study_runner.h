@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@
 #include "study_trials.h"
 
 namespace viewer {
+
+// The study's CSV cannot be written (before anything is sent to the server).
+class StudyOutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class StudyRunner {
  public:
@@ -34,7 +41,7 @@ class StudyRunner {
   enum class Screen { kBlank, kFrames, kQuestion, kDone };
 
   // `out_path` empty: "<study name>_<seed>.csv" in the working folder. Opens the CSV (throws
-  // std::runtime_error when it cannot) and asks the server for its status.
+  // StudyOutputError when it cannot) and asks the server for its status.
   StudyRunner(StudyPlan plan, std::string out_path, NetworkClient& client);
 
   void onReply(const gsph::v1::ControlReply& reply, Clock::time_point now);

@@ -362,6 +362,8 @@ int runViewer(const ViewerOptions& options) {
   try {
     ViewerApp app(options);
     return static_cast<int>(app.run());
+  } catch (const StudyOutputError& e) {
+    std::fprintf(stderr, "sph_viewer: %s\n", e.what());
   } catch (const WindowError& e) {
     std::fprintf(stderr, "sph_viewer: %s\n", e.what());
   } catch (const std::exception& e) {

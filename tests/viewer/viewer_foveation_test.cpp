@@ -207,6 +207,16 @@ TEST(ViewerStudy, BadStudiesAreRefusedBeforeAnythingChanges) {
   ASSERT_TRUE(code.has_value()) << readFile(dir + "/viewer.log");
   EXPECT_EQ(*code, 5) << readFile(dir + "/viewer.log");
   EXPECT_NE(readFile(dir + "/viewer.log").find("the server has no scene \"atlantis\""), std::string::npos);
+  // Results that cannot be written: the study does not start (exit 1).
+  std::ofstream(dir + "/good.json") << kStudy;
+  auto unwritable = startViewer(
+      join(endpointArgs(server.endpoints()), {"--study", dir + "/good.json", "--study-out", dir + "/missing/out.csv"}),
+      dir + "/unwritable.log");
+  const auto unwritable_code = unwritable->waitExit(kWait);
+  ASSERT_TRUE(unwritable_code.has_value());
+  EXPECT_EQ(*unwritable_code, 1);
+  EXPECT_NE(readFile(dir + "/unwritable.log").find("cannot write the study's results to"), std::string::npos)
+      << readFile(dir + "/unwritable.log");
   const std::string log = server.log();
   EXPECT_EQ(count(log, "->"), 0u) << log;
   EXPECT_EQ(count(log, "refused"), 0u) << log;
