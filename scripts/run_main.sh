@@ -9,7 +9,7 @@
 #   bash scripts/run_main.sh [--scene NAME] [--method regular|surface|gaze|hybrid|foveated]
 #                            [--seconds S] [--bridge "ARGS"] [--out DIR]
 #
-#   --scene NAME     dambreak (default), dambreak_obstacles, large_box, small_box, wave
+#   --scene NAME     dambreak (default), basin, dambreak_obstacles, large_box, small_box, wave
 #   --method M       foveated (default), regular, surface, gaze or hybrid
 #   --seconds S      headless only: wall time before the picture is taken (default 20)
 #   --bridge "ARGS"  gaze_bridge options instead of the recording, e.g.

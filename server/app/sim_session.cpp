@@ -154,8 +154,7 @@ void SimSession::setCamera(const sph::ScreenCamera& camera, bool from_client) {
 
 void SimSession::start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config) {
   // Room for every particle to split to L0 (the thesis's 20,000 for 10,000 L1).
-  const std::size_t capacity = std::max<std::size_t>(
-      sph::ParticleSet::kDefaultCapacity, static_cast<std::size_t>(sph::initialParticleCount(scene, sph::Level{0})));
+  const std::size_t capacity = sph::refinedCapacity(scene);
   // Build everything first, then swap: a throw leaves the running simulation untouched.
   auto sim = std::make_unique<sph::Simulation>(scene, sph::startLevel(method, scene.params.levels), capacity);
   const sph::ScreenCamera camera = camera_from_client_ ? camera_ : sph::cameraFromSpec(scene.camera);

@@ -92,8 +92,7 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
                                 "' names none; pass --gaze FILE)");
   }
   // Room for every particle to split to L0, as sph_server allows (app/sim_session.cpp).
-  const std::size_t capacity = std::max<std::size_t>(
-      sph::ParticleSet::kDefaultCapacity, static_cast<std::size_t>(sph::initialParticleCount(scene, sph::Level{0})));
+  const std::size_t capacity = sph::refinedCapacity(scene);
   sim_ = std::make_unique<sph::Simulation>(scene, sph::startLevel(m, scene.params.levels), capacity);
   auto adaptive =
       sph::makeAdaptiveController(m, scene.params.levels, scene.adaptive, sph::cameraFromSpec(scene.camera));

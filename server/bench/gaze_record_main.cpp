@@ -66,7 +66,7 @@ void waterOnScreen(const sph::Scene& scene, gaze::FixationModelParams& params) {
 class WaterOnScreen {
  public:
   WaterOnScreen(const sph::Scene& scene, double interval_s, std::size_t per_snapshot) : interval_s_(interval_s) {
-    sph::Simulation sim(scene, sph::Level{1});
+    sph::Simulation sim(scene, sph::Level{1}, sph::refinedCapacity(scene));
     const sph::Projector projector(sph::cameraFromSpec(scene.camera));
     const int steps_per_snapshot = std::max(1, static_cast<int>(std::lround(interval_s / scene.params.time_step)));
     for (int step = 0; step <= scene.frames; ++step) {

@@ -28,6 +28,9 @@ struct Options {
   std::string out = "validation_out";
   int threads = 2;
   int hydrostatic_frames = 0;  // 0: the scene's own
+  // Gaze recordings for the methods that follow the gaze, each run once per recording; empty:
+  // the scene's own.
+  std::vector<std::string> gaze_files;
   bool plot = true;
 };
 
@@ -42,11 +45,13 @@ constexpr double kGravity = 9.81;
 constexpr double kTMax = 3.0;      // compared with the experiment for 0 < T <= 3
 constexpr double kMaxShift = 0.2;  // the largest start-up shift in T allowed
 
-FrontRun runSurgeFront(const sph::Scene& scene, const std::string& method, const gaze::GazeRecording* gaze,
-                       int threads) {
+// `label`: the method as the tables name the run (the method, with its gaze recording's name where
+// it ran under several).
+FrontRun runSurgeFront(const sph::Scene& scene, const std::string& method, const std::string& label,
+                       const gaze::GazeRecording* gaze, int threads) {
   FrontRun out;
   out.preset = scene.params.preset;
-  out.method = method;
+  out.method = label;
   const double rho0 = scene.params.rest_density;
   const double wall_x = scene.boundary.box.min.x();
   bench::RunOptions options;
@@ -185,8 +190,8 @@ void plot(const std::vector<FrontRun>& runs, const std::vector<std::string>& pre
      << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin \\& Moyce 1952'";
   for (const FrontRun& r : runs) {
     gp << ", '" << (dir / "surge_front.csv").string() << "' using ((strcol(1) eq '" << r.preset << "' && strcol(2) eq '"
-       << r.method << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, r.method) << " title '" << r.preset
-       << " " << r.method << "'";
+       << r.method << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, r.method) << " noenhanced title '"
+       << r.preset << " " << r.method << "'";
   }
   gp << "\nset output '" << (dir / "hydrostatic.png").string() << "'\nset multiplot layout 1,2\n"
      << "set title 'Density against depth'\nset xlabel 'rho / rho0'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
@@ -229,6 +234,11 @@ int main(int argc, char** argv) {
   app.add_option("--hydrostatic-frames", o.hydrostatic_frames, "frames the tank settles for (0: the scene's own)")
       ->check(cli::nonNegative());
   app.add_flag("!--no-plot", o.plot, "write no PNGs");
+  app.add_option("--gaze", o.gaze_files,
+                 "gaze recordings (CSV: time_s,x,y,valid) for gaze, hybrid and foveated, each a run of its own "
+                 "(default: the scene's own)")
+      ->delimiter(',')
+      ->check(CLI::ExistingFile);
   if (auto code = cli::parse(app, argc, argv)) return *code;
   try {
     const fs::path dir(o.out);
@@ -238,17 +248,25 @@ int main(int argc, char** argv) {
     double rho0 = 0.0;
     for (const std::string& preset : o.presets) {
       const sph::Scene dam = scene::loadScene("martin_moyce", o.scene_dir, preset);
-      gaze::GazeRecording gaze;
-      if (!dam.gaze_recording.empty()) gaze = gaze::readGazeRecording(dam.gaze_recording);
+      std::vector<std::string> gaze_files = o.gaze_files;
+      if (gaze_files.empty() && !dam.gaze_recording.empty()) gaze_files.push_back(dam.gaze_recording);
+      std::vector<gaze::GazeRecording> recordings;
+      for (const std::string& file : gaze_files) recordings.push_back(gaze::readGazeRecording(file));
       for (const std::string& method : o.methods) {
-        fronts.push_back(runSurgeFront(dam, method, &gaze, o.threads));
-        const FrontRun& r = fronts.back();
-        std::fprintf(stderr,
-                     "[martin_moyce %s/%s] released at %.3f a high, %s mean compression; max front error (T <= 3) "
-                     "%s, with a shift of %.3f: %s\n",
-                     preset.c_str(), method.c_str(), r.column.height / r.column.width,
-                     percent(r.column.mean_compression).c_str(), percent(r.error).c_str(), r.shift,
-                     percent(r.shifted_error).c_str());
+        const bool per_recording = bench::methodNeedsGaze(method) && recordings.size() > 1;
+        for (std::size_t k = 0; k < (per_recording ? recordings.size() : 1); ++k) {
+          // "foveated@martin_moyce_far_wall" for the recording martin_moyce_far_wall.gaze.csv.
+          const std::string label =
+              per_recording ? method + "@" + fs::path(gaze_files[k]).stem().stem().string() : method;
+          fronts.push_back(runSurgeFront(dam, method, label, recordings.empty() ? nullptr : &recordings[k], o.threads));
+          const FrontRun& r = fronts.back();
+          std::fprintf(stderr,
+                       "[martin_moyce %s/%s] released at %.3f a high, %s mean compression; max front error (T <= 3) "
+                       "%s, with a shift of %.3f: %s\n",
+                       preset.c_str(), label.c_str(), r.column.height / r.column.width,
+                       percent(r.column.mean_compression).c_str(), percent(r.error).c_str(), r.shift,
+                       percent(r.shifted_error).c_str());
+        }
       }
       const sph::Scene tank = scene::loadScene("hydrostatic", o.scene_dir, preset);
       rho0 = tank.params.rest_density;

@@ -1,8 +1,11 @@
 #include "sph/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "sph/particles.h"
 
 namespace sph {
 
@@ -32,6 +35,11 @@ int initialParticleCount(const Scene& scene, Level start) {
   int n = 0;
   for (const int c : initialFill(scene, start)) n += c;
   return n;
+}
+
+std::size_t refinedCapacity(const Scene& scene) {
+  return std::max<std::size_t>(ParticleSet::kDefaultCapacity,
+                               static_cast<std::size_t>(initialParticleCount(scene, Level{0})));
 }
 
 }  // namespace sph

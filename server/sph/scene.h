@@ -56,5 +56,8 @@ Scene gatedScene(const Scene& scene);
 std::array<int, kMaxLevels> initialFill(const Scene& scene, Level start);
 // The fill's particles over all levels.
 int initialParticleCount(const Scene& scene, Level start);
+// Room for every particle of the scene's water at L0 (and at least ParticleSet::kDefaultCapacity):
+// the particle capacity a run that may refine all its water needs.
+std::size_t refinedCapacity(const Scene& scene);
 
 }  // namespace sph

@@ -2,7 +2,8 @@
 // particle in the box, produce no NaN and keep the mass exactly (by level, every frame): with each
 // scene's own preset (the thesis's), and for 300 frames (3 s: the collapse, the splash and the
 // first slosh) with the server's default, pbf, whose step costs far more than the thesis's, with
-// the foveated method too (its coarser levels need an incompressible solver).
+// the foveated method too (its coarser levels need an incompressible solver), and the basin
+// under the foveated method.
 #include <gtest/gtest.h>
 
 #include "bench/bench_run.h"
@@ -67,5 +68,9 @@ std::string caseName(const ::testing::TestParamInfo<SceneAndMethod>& test) {
 }
 INSTANTIATE_TEST_SUITE_P(AllScenesAllMethods, ScenarioHealth, kAllScenesThesisMethods, caseName);
 INSTANTIATE_TEST_SUITE_P(AllScenesAllMethods, ScenarioHealthPbf, kAllScenesAllMethods, caseName);
+// The basin (ten times the dam break's water) with the method it ships for: its regular run
+// costs ten dam breaks, the bench's to measure.
+INSTANTIATE_TEST_SUITE_P(Basin, ScenarioHealthPbf,
+                         ::testing::Combine(::testing::Values("basin"), ::testing::Values("foveated")), caseName);
 
 }  // namespace
