@@ -101,6 +101,28 @@ TEST(StudyTrials, TheSeedFixesTheOrderAndEveryTrialIsThere) {
   EXPECT_LT(reference_first, static_cast<int>(a.size()));
 }
 
+TEST(StudyTrials, SameDifferentTrialsAreSomeOfEach) {
+  viewer::StudyPlan plan = viewer::parseStudyPlan(kGood, "study.json");
+  plan.question = viewer::StudyQuestion::kSameDifferent;
+  plan.repetitions = 20;
+  const auto trials = viewer::makeTrials(plan, 5);
+  ASSERT_EQ(trials.size(), 2u * 2u * 20u);
+  std::set<std::string> orders;
+  int same = 0;
+  for (const auto& t : trials) {
+    orders.insert(viewer::orderText(t));
+    same += t.same();
+  }
+  EXPECT_EQ(orders, (std::set<std::string>{"RR", "RT", "TR", "TT"}));
+  // About half "same" (binomially: 80 draws of one half stay within 20..60 but for p < 1e-5).
+  EXPECT_GT(same, 20);
+  EXPECT_LT(same, 60);
+  const auto again = viewer::makeTrials(plan, 5);
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    EXPECT_STREQ(viewer::orderText(trials[i]), viewer::orderText(again[i]));
+  }
+}
+
 TEST(StudyTrials, AnswersAreScoredByTheQuestion) {
   viewer::StudyTrial t;
   t.intervals = {viewer::Shown::kTest, viewer::Shown::kReference};
