@@ -144,19 +144,19 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
          "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
          "divergence_iterations,placement_iterations,visible,over_budget,fovea_level,fovea_width_arcmin,"
-         "fovea_mar_arcmin\n";
+         "fovea_mar_arcmin,split_passes\n";
   char line[640];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
     std::snprintf(line, sizeof line,
                   "%d,%.4f,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%d,%d,"
-                  "%d,%.3f,%.3f\n",
+                  "%d,%.3f,%.3f,%d\n",
                   r.frame, r.sim_time, r.particles(), levelCounts(r).c_str(), r.ms.neighbor_ms,
                   r.ms.density_pressure_ms, r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms,
                   steps_per_s, r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
                   sph::gazeModeName(r.gaze_mode), r.merge_unpaired, r.rms_speed, r.volume, r.substeps,
                   r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.visible, r.over_budget,
-                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin);
+                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin, r.split_passes);
     out << line;
   }
 }

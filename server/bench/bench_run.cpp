@@ -120,6 +120,7 @@ void SceneRun::stepFrame() {
     r.splits = controller_->lastStats().splits;
     r.merges = controller_->lastStats().merges;
     r.merge_unpaired = controller_->lastStats().merge_wanted - 2 * r.merges;
+    r.split_passes = controller_->lastStats().split_passes;
     r.gaze_mode = controller_->lastStats().gaze_mode;
     r.visible = controller_->lastStats().visible;
     r.over_budget = controller_->lastStats().over_budget;

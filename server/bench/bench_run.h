@@ -38,6 +38,7 @@ struct FrameRecord {
   int splits = 0;  // adaptive step of this frame
   int merges = 0;
   int merge_unpaired = 0;  // particles flagged MERGE that found no partner
+  int split_passes = 0;    // the adaptive step's decisions (AdaptiveStats::split_passes); 0: none
   sph::GazeMode gaze_mode = sph::GazeMode::None;
   // foveated: what the eye gets (adaptive/perceptual_budget.h): visible particles, those wider
   // than the eye's acuity at their eccentricity allows, and the particle under the gaze.

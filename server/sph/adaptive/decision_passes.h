@@ -72,7 +72,7 @@ struct DecisionPassForms {
   DecisionCounts (*characterDecisions)(const SurfaceArrays& arrays, std::size_t begin, std::size_t end,
                                        const CharacterField& field);
   DecisionCounts (*gazeDecisions)(const GazeCircle& gaze, const float* xyz, const float* radius,
-                                  const Level* size_class, std::int8_t* out, std::size_t begin, std::size_t end,
+                                  const Level* level, std::int8_t* out, std::size_t begin, std::size_t end,
                                   bool hybrid);
 };
 

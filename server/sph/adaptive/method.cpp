@@ -1,31 +1,48 @@
 #include "sph/adaptive/method.h"
 
-#include <algorithm>
-
+#include <memory>
 #include <stdexcept>
 
+#include "sph/adaptive/adaptive_rule.h"
+#include "sph/adaptive/foveated_rule.h"
+#include "sph/adaptive/thesis_rules.h"
 #include "sph/param_table.h"
 
 namespace sph {
 
 namespace {
 
+// The method registry: a method's name, whether it needs a gaze source, and its rule.
 struct MethodEntry {
   Method method;
   const char* name;
+  bool uses_gaze;
+  std::unique_ptr<AdaptiveRule> (*rule)();  // nullptr: no adaptive step
 };
+template <class Rule>
+std::unique_ptr<AdaptiveRule> make() {
+  return std::make_unique<Rule>();
+}
 constexpr MethodEntry kMethods[] = {
-    {Method::Regular, "regular"}, {Method::Surface, "surface"},   {Method::Gaze, "gaze"},
-    {Method::Hybrid, "hybrid"},   {Method::Foveated, "foveated"},
+    {Method::Regular, "regular", false, nullptr},
+    {Method::Surface, "surface", false, make<SurfaceRule>},
+    {Method::Gaze, "gaze", true, make<GazeRule>},
+    {Method::Hybrid, "hybrid", true, make<HybridRule>},
+    {Method::Foveated, "foveated", true, make<FoveatedRule>},
 };
+
+const MethodEntry* entryOf(Method m) {
+  for (const auto& e : kMethods) {
+    if (e.method == m) return &e;
+  }
+  return nullptr;
+}
 
 }  // namespace
 
 const char* methodName(Method m) {
-  for (const auto& e : kMethods) {
-    if (e.method == m) return e.name;
-  }
-  return "unknown";
+  const MethodEntry* e = entryOf(m);
+  return e != nullptr ? e->name : "unknown";
 }
 
 bool methodByName(const std::string& name, Method& out) {
@@ -44,16 +61,30 @@ std::vector<std::string> methodNames() {
   return names;
 }
 
+std::unique_ptr<AdaptiveRule> makeAdaptiveRule(Method method) {
+  const MethodEntry* e = entryOf(method);
+  return e != nullptr && e->rule != nullptr ? e->rule() : nullptr;
+}
+
 Level startLevel(Method m, int levels) {
-  if (m == Method::Regular) return Level{0};
-  return coarsestLevel(m, levels);
+  const std::unique_ptr<AdaptiveRule> rule = makeAdaptiveRule(m);
+  return rule != nullptr ? rule->coarsest(levels) : Level{0};
 }
 
 Level coarsestLevel(Method m, int levels) {
-  return m == Method::Foveated ? asLevel(std::clamp(levels, kMinLevels, kMaxLevels) - 1) : Level{1};
+  const std::unique_ptr<AdaptiveRule> rule = makeAdaptiveRule(m);
+  return rule != nullptr ? rule->coarsest(levels) : Level{1};
 }
 
-bool usesGaze(Method m) { return m == Method::Gaze || m == Method::Hybrid || m == Method::Foveated; }
+bool usesGaze(Method m) {
+  const MethodEntry* e = entryOf(m);
+  return e != nullptr && e->uses_gaze;
+}
+
+GazeMode AdaptiveRule::gazeMode(const GazeInput& gaze, const AdaptiveConfig& config) const {
+  if (!gaze.present || !(gaze.age_s <= config.gaze_hold_s)) return GazeMode::Fallback;
+  return gaze.age_s <= config.gaze_stale_s ? GazeMode::Tracking : GazeMode::Holding;
+}
 
 const char* gazeModeName(GazeMode m) {
   switch (m) {

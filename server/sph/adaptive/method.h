@@ -18,10 +18,12 @@ const char* methodName(Method m);
 // False when `name` is not one of regular, surface, gaze, hybrid, foveated.
 bool methodByName(const std::string& name, Method& out);
 std::vector<std::string> methodNames();
-// Regular runs all at L0; the thesis's adaptive methods start at L1 and split where they need
-// detail; foveated starts at its coarsest level. `levels`: the run's level count (SimParams::levels).
+// Regular runs all at L0; an adaptive method starts at its rule's coarsest level (the thesis's at
+// L1, splitting where they need detail; foveated at L(levels - 1)). `levels`: the run's level
+// count (SimParams::levels).
 Level startLevel(Method m, int levels);
-// The coarsest level the method makes: L1 for the thesis's, L(levels - 1) for foveated.
+// The coarsest level the method makes (AdaptiveRule::coarsest); L1 for regular, whose runs still
+// carry the thesis's two levels.
 Level coarsestLevel(Method m, int levels);
 // Gaze, hybrid and foveated refine where the eye looks, so they need a gaze source.
 bool usesGaze(Method m);

@@ -1,0 +1,45 @@
+#include "sph/adaptive/foveated_rule.h"
+
+#include <algorithm>
+
+namespace sph {
+
+Level FoveatedRule::coarsest(int levels) const { return asLevel(std::clamp(levels, kMinLevels, kMaxLevels) - 1); }
+
+void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& changes, AdaptiveStats& stats) {
+  // The depth field (hidden water) advances every step; without a gaze the eye is taken to rest
+  // at the screen's centre.
+  sim.setSurfaceDistanceTracking(true);
+  const bool tracked = in.mode == GazeMode::Tracking || in.mode == GazeMode::Holding;
+  const double gx = tracked ? in.gaze.x : 0.5;
+  const double gy = tracked ? in.gaze.y : 0.5;
+  FoveatedView view;
+  const DecisionCounts wanted = decideFoveated(sim, in.camera, gx, gy, in.config, false,
+                                               changes.decisions(sim.particles().size()), scratch_, view);
+  stats.split_wanted = wanted.split_wanted;
+  stats.merge_wanted = wanted.merge_wanted;
+  const SplitMergeCounts counts = changes.apply(sim, wanted, coarsest(in.levels), stragglerReach());
+  stats.splits = counts.splits;
+  stats.merges = counts.merges;
+  // Where the eye sees a particle more than one level coarser than it allows (the new fovea after
+  // a saccade), the step splits again, level by level, so the eye finds the finest level at once
+  // rather than a level a frame later. Water the eye does not see (hidden, off the display) and
+  // the rules that do not come from the eye (thin, shallow, graded) split a level a step: a
+  // further pass costs a neighbour search and a decision over all the water.
+  for (int pass = 2; pass < in.levels && view.still_coarse > 0; ++pass) {
+    sim.rebuildNeighbors();
+    const DecisionCounts more = decideFoveated(sim, in.camera, gx, gy, in.config, true,
+                                               changes.decisions(sim.particles().size()), scratch_, view);
+    stats.split_wanted += more.split_wanted;
+    ++stats.split_passes;
+    stats.splits += changes.applySplits(sim);
+  }
+  const PerceptualBudget eye = meter_.measure(sim.particles(), sim.params(), in.camera, gx, gy, in.config);
+  stats.visible = eye.visible;
+  stats.over_budget = eye.over_budget;
+  stats.fovea_level = eye.gaze_level;
+  stats.fovea_width_arcmin = eye.gaze_width_arcmin;
+  stats.fovea_mar_arcmin = eye.gaze_mar_arcmin;
+}
+
+}  // namespace sph
