@@ -1,5 +1,6 @@
 #include "decoded_frame.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -147,6 +148,25 @@ bool decodeLevels(const gsph::v1::Frame& frame, bool declared, DecodedFrame& out
   return true;
 }
 
+// Figures that are not finite read as 0 and rings beyond the declared levels are dropped: they are
+// what the panel and the overlay show, never what the water is drawn from.
+void decodeFoveation(const gsph::v1::Frame& frame, FoveationFigures& out) {
+  const auto finite = [](float v) { return std::isfinite(v) ? v : 0.0f; };
+  out.quality = finite(frame.quality());
+  out.periphery_gain = finite(frame.periphery_gain());
+  out.periphery_gain_ceiling = finite(frame.periphery_gain_ceiling());
+  out.realtime_ratio = finite(frame.realtime_ratio());
+  out.visible = frame.visible_count();
+  out.over_budget = std::min(frame.over_budget_count(), frame.visible_count());
+  out.fovea_width_arcmin = finite(frame.fovea_width_arcmin());
+  out.fovea_mar_arcmin = finite(frame.fovea_mar_arcmin());
+  out.ring_radii.clear();
+  for (int k = 0; k < frame.fovea_ring_radii_size() && out.ring_radii.size() + 1 < kMaxSizeLevels; ++k) {
+    const float r = frame.fovea_ring_radii(k);
+    out.ring_radii.push_back(std::isfinite(r) && r > 0.0f ? r : 0.0f);
+  }
+}
+
 }  // namespace
 
 bool DecodedFrame::hasExtraLevels() const {
@@ -154,6 +174,15 @@ bool DecodedFrame::hasExtraLevels() const {
     if (level_counts[level] > 0) return true;
   }
   return false;
+}
+
+std::size_t DecodedFrame::colourLevelCount() const {
+  if (method == gsph::v1::METHOD_FOVEATED) return level_radii.size();
+  std::size_t used = 2;
+  for (std::size_t level = 0; level < level_counts.size(); ++level) {
+    if (level_counts[level] > 0) used = std::max(used, level + 1);
+  }
+  return std::min(used, std::max<std::size_t>(level_radii.size(), 2));
 }
 
 bool GazeOverlay::drawable() const {
@@ -221,6 +250,7 @@ bool decodeFrame(const gsph::v1::Frame& frame, DecodedFrame& out, std::string& e
       !std::isfinite(out.gaze.ring_radius)) {
     out.gaze.mode = gsph::v1::GAZE_MODE_UNSPECIFIED;  // not drawable; the frame itself is fine
   }
+  decodeFoveation(frame, out.foveation);
   out.has_camera = frame.has_camera();
   out.camera = frame.camera();
   out.encoding = frame.encoding();

@@ -49,6 +49,21 @@ struct GazeOverlay {
   bool drawable() const;
 };
 
+// What the foveated method did in the frame's step (sph.proto, Frame); zero / empty for the others.
+struct FoveationFigures {
+  float quality = 0.0f;                 // q in force
+  float periphery_gain = 0.0f;          // g in force
+  float periphery_gain_ceiling = 0.0f;  // the most the real-time governor may use
+  float realtime_ratio = 0.0f;          // simulated over wall seconds lately; 0: not measured
+  std::uint32_t visible = 0;            // particles the eye sees
+  std::uint32_t over_budget = 0;        // of those, wider than the perceptual budget allows
+  float fovea_width_arcmin = 0.0f;      // the particle under the gaze; 0: the gaze is on no water
+  float fovea_mar_arcmin = 0.0f;        // the eye's acuity there
+  // Where levels 1, 2, ... begin around the gaze point, viewport widths (finite, >= 0).
+  std::vector<float> ring_radii;
+  bool atCeiling() const { return periphery_gain_ceiling > 0.0f && periphery_gain >= periphery_gain_ceiling; }
+};
+
 // Size levels: the thesis's two classes are levels 0 and 1; the foveated method adds coarser ones.
 inline constexpr std::uint8_t kClassSmall = 0;
 inline constexpr std::uint8_t kClassLarge = 1;
@@ -67,6 +82,7 @@ struct DecodedFrame {
   gsph::v1::PhaseTimings timings;
   float steps_per_second = 0.0f;
   GazeOverlay gaze;
+  FoveationFigures foveation;
   bool has_camera = false;
   gsph::v1::CameraPose camera;  // the pose the server's gaze projection used
   SceneGeometry geometry;
@@ -91,6 +107,10 @@ struct DecodedFrame {
   std::size_t particleCount() const { return positions.size(); }
   // Any particle of a level beyond L0 and L1 (the foveated method's coarser levels).
   bool hasExtraLevels() const;
+  // The levels the colour map spreads over: every declared one under foveated; under the thesis's
+  // methods, which make L0 and L1 only, those two (or more where the frame has particles there),
+  // so their two levels get the map's two ends.
+  std::size_t colourLevelCount() const;
 };
 
 // Fills `out` from `frame`. On failure returns false, sets `error` to a human-readable reason and

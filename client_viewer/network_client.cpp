@@ -112,6 +112,11 @@ void NetworkClient::setGaze(float x, float y, bool valid) {
   gaze_ = GazeState{x, y, valid};
 }
 
+void NetworkClient::setControlTimeout(std::chrono::milliseconds timeout) {
+  std::lock_guard lock(mutex_);
+  control_timeout_ = timeout;
+}
+
 std::uint64_t NetworkClient::sendControl(gsph::v1::Control request) {
   std::lock_guard lock(mutex_);
   request.set_protocol_version(gsph::v1::PROTOCOL_VERSION_CURRENT);
@@ -219,8 +224,10 @@ void NetworkClient::sendOutgoing(Sockets& s, Clock::time_point now) {
   std::optional<PoseData> pose;
   std::optional<GazeState> gaze;
   std::deque<gsph::v1::Control> controls;
+  std::chrono::milliseconds control_timeout{};
   {
     std::lock_guard lock(mutex_);
+    control_timeout = control_timeout_;
     if (pose_ && (pose_dirty_ || now - s.last_pose_send >= kPoseResend)) {
       pose = pose_;
       pose_dirty_ = false;
@@ -244,7 +251,7 @@ void NetworkClient::sendOutgoing(Sockets& s, Clock::time_point now) {
           gsph::v1::ControlReply timeout;
           timeout.set_request_id(it->first);
           timeout.set_ok(false);
-          timeout.set_error("no reply from the server within 3 s");
+          timeout.set_error("no reply from the server within " + std::to_string(control_timeout.count() / 1000) + " s");
           if (replies_.size() >= kMaxQueuedReplies) replies_.pop_front();
           replies_.push_back(std::move(timeout));
         }
@@ -293,7 +300,7 @@ void NetworkClient::sendOutgoing(Sockets& s, Clock::time_point now) {
   for (const auto& request : controls) {
     request.SerializeToString(&bytes);
     if (s.control.send(zmq::buffer(bytes), zmq::send_flags::dontwait)) {
-      s.pending[request.request_id()] = now + kControlTimeout;
+      s.pending[request.request_id()] = now + control_timeout;
     } else {
       // our own status poll is simply retried at the next interval
       if (s.internal_requests.erase(request.request_id()) > 0) continue;

@@ -70,6 +70,9 @@ class NetworkClient {
   // Render thread -> network thread. Latest value wins; nothing queues up.
   void setPose(const PoseData& pose);
   void setGaze(float x, float y, bool valid);
+  // How long a request waits for its reply before it fails (kControlTimeout unless set): a study
+  // waits out scene restarts, which take seconds for a big scene.
+  void setControlTimeout(std::chrono::milliseconds timeout);
   // Queues a request (at most a few; the oldest is dropped); returns the request_id it was given.
   std::uint64_t sendControl(gsph::v1::Control request);
 
@@ -107,6 +110,7 @@ class NetworkClient {
   std::optional<gsph::v1::ServerStatus> status_;
   NetworkStats stats_;
   std::uint64_t next_request_id_ = 1;
+  std::chrono::milliseconds control_timeout_{kControlTimeout};
 };
 
 }  // namespace viewer

@@ -1,5 +1,6 @@
 #include "outline_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -99,6 +100,25 @@ void appendGazeOverlay(LineList& lines, const GazeOverlay& gaze, float aspect) {
   appendScreenCircle(lines, gaze.x, gaze.y, gaze.radius, aspect, colour);
   if (gaze.ring_radius > gaze.radius) {
     appendScreenCircle(lines, gaze.x, gaze.y, gaze.ring_radius, aspect, kRingColour, true);
+  }
+}
+
+void appendFoveaRings(LineList& lines, const DecodedFrame& frame, float aspect) {
+  const auto& radii = frame.foveation.ring_radii;
+  const bool tracking = frame.gaze.mode == gsph::v1::GAZE_MODE_TRACKING;
+  const std::size_t level_count = std::max(frame.colourLevelCount(), radii.size() + 1);
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    if (!(radii[k] > 0.0f)) continue;
+    const LevelRgb c = levelColour(k + 1, level_count);
+    appendScreenCircle(lines, frame.gaze.x, frame.gaze.y, radii[k], aspect, {c.r, c.g, c.b}, !tracking);
+  }
+}
+
+void appendMethodOverlay(LineList& lines, const DecodedFrame& frame, float aspect) {
+  if (frame.method == gsph::v1::METHOD_FOVEATED) {
+    appendFoveaRings(lines, frame, aspect);
+  } else if (frame.method == gsph::v1::METHOD_GAZE || frame.method == gsph::v1::METHOD_HYBRID) {
+    appendGazeOverlay(lines, frame.gaze, aspect);
   }
 }
 

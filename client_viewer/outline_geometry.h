@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "decoded_frame.h"
+#include "level_colours.h"
 
 namespace viewer {
 
@@ -33,6 +34,15 @@ void appendScreenCircle(LineList& lines, float x, float y, float radius_of_width
                         bool dashed = false);
 // The gaze circle and, when wider, the REMAIN ring around it, coloured by the gaze mode.
 void appendGazeOverlay(LineList& lines, const GazeOverlay& gaze, float aspect);
+
+// The foveated method's rings: where each coarser level begins around the gaze point the step used,
+// radii as the server sent them (viewport widths), each in its level's colour (level_colours.h);
+// dashed while the gaze is held or lost. Rings of radius 0 (the level is allowed at the gaze point)
+// are left out.
+void appendFoveaRings(LineList& lines, const DecodedFrame& frame, float aspect);
+// What the frame's method used: the rings for foveated, the gaze circle for gaze and hybrid,
+// nothing for the others.
+void appendMethodOverlay(LineList& lines, const DecodedFrame& frame, float aspect);
 
 // A small cross at a normalized screen point (the mouse gaze, when it is being sent).
 void appendScreenCross(LineList& lines, float x, float y, float size_of_width, float aspect, Rgb colour);

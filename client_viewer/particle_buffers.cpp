@@ -58,6 +58,7 @@ void ParticleBuffers::upload(const DecodedFrame& frame) {
     radius_[level] = frame.level_radii[level];
     has_level_[level] = level < frame.level_counts.size() && frame.level_counts[level] > 0;
   }
+  level_count_ = std::min(frame.colourLevelCount(), kMaxSizeLevels);
   has_speed_ = !frame.speeds.empty();
   has_counts_ = !frame.neighbor_counts.empty();
   max_speed_ = 1e-3f;

@@ -39,6 +39,8 @@ class ParticleBuffers {
   float maxSpeed() const { return max_speed_; }
   bool hasSpeed() const { return has_speed_; }
   bool hasNeighbourCounts() const { return has_counts_; }
+  // The levels the colour map spreads over (DecodedFrame::colourLevelCount).
+  std::size_t levelCount() const { return level_count_; }
 
  private:
   GLuint vao_ = 0;
@@ -51,6 +53,7 @@ class ParticleBuffers {
   float max_speed_ = 1.0f;
   bool has_speed_ = false;
   bool has_counts_ = false;
+  std::size_t level_count_ = 2;
   std::vector<float> staging_;  // reused between uploads
 };
 

@@ -1,6 +1,9 @@
 #include "particle_renderer.h"
 
+#include <array>
+
 #include "glsl_common.h"
+#include "level_colours.h"
 
 namespace viewer {
 
@@ -23,14 +26,9 @@ vec3 speedColour(float t) {  // blue -> cyan -> yellow -> red
   return mix(vec3(1.0, 0.9, 0.1), vec3(0.95, 0.15, 0.1), (t - 0.66) / 0.34);
 }
 
-// L0 blue, L1 red; the foveated method's coarser levels green and amber, any further one grey.
-vec3 levelColour(int level) {
-  if (level == 0) return vec3(0.15, 0.38, 1.0);
-  if (level == 1) return vec3(0.92, 0.18, 0.12);
-  if (level == 2) return vec3(0.18, 0.75, 0.30);
-  if (level == 3) return vec3(0.98, 0.70, 0.10);
-  return vec3(0.6);
-}
+// One colour per level of the frame (level_colours.h), set per frame.
+uniform vec3 u_level_colour[16];
+vec3 levelColour(int level) { return u_level_colour[level]; }
 
 void main() {
   float radius = levelRadius();
@@ -93,6 +91,14 @@ void ParticleRenderer::draw(const ParticleBuffers& particles, const Eigen::Matri
   // Without velocities in the frame speed colouring has nothing to show: fall back to size levels.
   glUniform1i(program_.uniform("u_colour_mode"), mode == ColourMode::kSpeed && particles.hasSpeed() ? 1 : 0);
   glUniform1f(program_.uniform("u_max_speed"), particles.maxSpeed());
+  std::array<float, 3 * kMaxSizeLevels> colours{};
+  for (std::size_t level = 0; level < kMaxSizeLevels; ++level) {
+    const LevelRgb c = levelColour(level, particles.levelCount());
+    colours[3 * level] = c.r;
+    colours[3 * level + 1] = c.g;
+    colours[3 * level + 2] = c.b;
+  }
+  glUniform3fv(program_.uniform("u_level_colour"), static_cast<GLsizei>(kMaxSizeLevels), colours.data());
   glUniform1i(program_.uniform("u_debug"), static_cast<int>(debug));
   particles.draw();
 }

@@ -1,5 +1,8 @@
 #include "stats_panel.h"
 
+#include "foveation_readout.h"
+#include "level_colours.h"
+
 #include <imgui.h>
 
 #include <cstdio>
@@ -21,14 +24,23 @@ void showParticleCounts(const DecodedFrame& frame) {
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
   std::string line = "particles ";
   line += std::to_string(frame.particleCount());
-  line += ':';
-  for (std::size_t level = 0; level < frame.level_counts.size(); ++level) {
-    line += level == 0 ? " L" : ", L";
-    line += std::to_string(level);
-    line += ' ';
-    line += std::to_string(frame.level_counts[level]);
-  }
+  line += ": ";
+  line += levelCountsText(frame);
   ImGui::TextUnformatted(line.c_str());
+}
+
+// One swatch per level in its colour (particles mode, the foveated rings), finest first.
+void showLevelLegend(const DecodedFrame& frame) {
+  ImGui::TextUnformatted("levels ");
+  const std::size_t count = frame.colourLevelCount();
+  for (std::size_t level = 0; level < count; ++level) {
+    const LevelRgb c = levelColour(level, count);
+    ImGui::SameLine();
+    ImGui::ColorButton(("##level" + std::to_string(level)).c_str(), ImVec4(c.r, c.g, c.b, 1.0f),
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop, ImVec2(14, 14));
+    ImGui::SameLine();
+    ImGui::Text("L%zu", level);
+  }
 }
 
 }  // namespace
@@ -47,21 +59,6 @@ const char* methodName(gsph::v1::Method method) {
       return "foveated";
     default:
       return "?";
-  }
-}
-
-const char* gazeModeName(gsph::v1::GazeMode mode) {
-  switch (mode) {
-    case gsph::v1::GAZE_MODE_NONE:
-      return "not used";
-    case gsph::v1::GAZE_MODE_TRACKING:
-      return "tracking";
-    case gsph::v1::GAZE_MODE_HOLDING:
-      return "holding";
-    case gsph::v1::GAZE_MODE_FALLBACK:
-      return "fallback (surface)";
-    default:
-      return "-";
   }
 }
 
@@ -116,8 +113,12 @@ void StatsPanel::draw(const DecodedFrame* frame, const NetworkStats& stats, cons
     ImGui::Text("ms  neighbours %.2f  density+pressure %.2f", t.neighbor_ms(), t.density_pressure_ms());
     ImGui::Text("    accel+integrate+collide %.2f  adaptive %.2f  total %.2f", t.accel_integrate_collide_ms(),
                 t.adaptive_ms(), t.total_ms());
-    ImGui::Text("gaze    %s, age %.0f ms, radius %.3f W", gazeModeName(frame->gaze.mode), frame->gaze.age_ms,
-                frame->gaze.radius);
+    if (render == RenderMode::kParticles || frame->method == gsph::v1::METHOD_FOVEATED) showLevelLegend(*frame);
+    for (const std::string& line : foveationLines(*frame)) ImGui::TextUnformatted(line.c_str());
+    if (frame->gaze.age_ms >= 0.0f) ImGui::Text("        sample age %.0f ms", frame->gaze.age_ms);
+    if (frame->method == gsph::v1::METHOD_GAZE || frame->method == gsph::v1::METHOD_HYBRID) {
+      ImGui::Text("        circle radius %.3f W", frame->gaze.radius);
+    }
     ImGui::Text("frame   seq %llu, age %.1f ms, %s, %zu KB", static_cast<unsigned long long>(frame->sequence),
                 rates.frame_age_ms,
                 frame->encoding == gsph::v1::POSITION_ENCODING_QUANTIZED16 ? "quantized16" : "float32",

@@ -39,6 +39,5 @@ class StatsPanel {
 };
 
 const char* methodName(gsph::v1::Method method);
-const char* gazeModeName(gsph::v1::GazeMode mode);
 
 }  // namespace viewer

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "foveation_readout.h"
 #include "png_image.h"
 
 namespace viewer {
@@ -21,6 +22,7 @@ namespace {
 
 constexpr auto kServerSilence = std::chrono::seconds(2);         // then "waiting for server" again
 constexpr auto kMouseGazePeriod = std::chrono::milliseconds(8);  // ~120 Hz at most
+constexpr auto kLogPeriod = std::chrono::seconds(5);             // the method's figures on stderr
 
 double millisSince(std::chrono::steady_clock::time_point t, std::chrono::steady_clock::time_point now) {
   return std::chrono::duration<double, std::milli>(now - t).count();
@@ -84,6 +86,10 @@ ViewerApp::ViewerApp(const ViewerOptions& options)
     camera_ready_ = true;
   }
   initial_camera_ = camera_;
+  if (options.study) {
+    study_ = std::make_unique<StudyRunner>(*options.study, options.study_out, client_);
+    show_panel_ = false;
+  }
 }
 
 ExitCode ViewerApp::run() {
@@ -99,7 +105,14 @@ ExitCode ViewerApp::run() {
     const auto now = Clock::now();
     last_render_ = now;
     const bool new_frame = takeFrame();
-    while (auto reply = client_.takeReply()) panel_.showReply(*reply);
+    while (auto reply = client_.takeReply()) {
+      if (study_) {
+        study_->onReply(*reply, now);
+      } else {
+        panel_.showReply(*reply);
+      }
+    }
+    if (study_) study_->update(now, frame_.get(), new_frame);
     handleKeys();
 
     Viewport vp;
@@ -113,6 +126,7 @@ ExitCode ViewerApp::run() {
     sendGaze(vp, now);
     drawScene(vp);
     drawPanel(now);
+    logFigures(now);
 
     if (new_frame) ++frames_shown_;
     const bool frames_done = options_.frames > 0 && frames_shown_ >= options_.frames;
@@ -147,6 +161,10 @@ ExitCode ViewerApp::run() {
       exit_code_ = ExitCode::kTimeout;
     }
     if (snapshot_now || frames_done || timed_out) break;
+    if (study_ && study_->done()) {
+      if (study_->failed()) exit_code_ = ExitCode::kStudyFailed;
+      break;
+    }
   }
   if (options_.report) report_.print(std::chrono::duration<double>(Clock::now() - started_).count());
   client_.stop();
@@ -185,6 +203,12 @@ bool ViewerApp::takeFrame() {
 void ViewerApp::handleKeys() {
   // Keys handled here rather than in a callback so they see this frame's state.
   ImGuiIO& io = ImGui::GetIO();
+  if (study_) {
+    // The participant answers and may stop; the camera stays where the study began.
+    handleStudyKeys(Clock::now());
+    events_.key_count = 0;
+    return;
+  }
   if (!io.WantCaptureKeyboard) {
     if (events_.takeKey(GLFW_KEY_R)) camera_ = initial_camera_;
     if (events_.takeKey(GLFW_KEY_SPACE)) panel_.togglePause(frame_.get());
@@ -193,6 +217,16 @@ void ViewerApp::handleKeys() {
   }
   events_.key_count = 0;
   input_.update(camera_, io.WantCaptureMouse, std::exchange(events_.wheel_steps, 0.0));
+}
+
+void ViewerApp::handleStudyKeys(Clock::time_point now) {
+  if (events_.takeKey(GLFW_KEY_1) || events_.takeKey(GLFW_KEY_KP_1) || events_.takeKey(GLFW_KEY_S)) {
+    study_->answer(1, now);
+  }
+  if (events_.takeKey(GLFW_KEY_2) || events_.takeKey(GLFW_KEY_KP_2) || events_.takeKey(GLFW_KEY_D)) {
+    study_->answer(2, now);
+  }
+  if (events_.takeKey(GLFW_KEY_ESCAPE)) study_->stop();
 }
 
 void ViewerApp::sendPose(const Viewport& vp) {
@@ -208,7 +242,7 @@ void ViewerApp::sendPose(const Viewport& vp) {
 
 void ViewerApp::sendGaze(const Viewport& vp, Clock::time_point now) {
   overlay_lines_.clear();
-  if (frame_) appendGazeOverlay(overlay_lines_, frame_->gaze, vp.aspect());
+  if (frame_ && !hideCues()) appendMethodOverlay(overlay_lines_, *frame_, vp.aspect());
   if (options_.gaze_at && now - last_gaze_time_ >= kMouseGazePeriod) {
     client_.setGaze((*options_.gaze_at)[0], (*options_.gaze_at)[1], true);
     last_gaze_time_ = now;
@@ -228,6 +262,11 @@ void ViewerApp::sendGaze(const Viewport& vp, Clock::time_point now) {
 void ViewerApp::drawScene(const Viewport& vp) {
   target_.bind(vp.fb_w, vp.fb_h);
   const RenderDebug debug = options_.render_debug;
+  if (study_ && study_->screen() != StudyRunner::Screen::kFrames) {
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);  // blank between the intervals and for the question
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    return;
+  }
   if (frame_ && render_mode_ == RenderMode::kFluid) {
     fluid_.draw(particle_buffers_, view_, projection_, target_, debug);
   } else {
@@ -258,7 +297,10 @@ void ViewerApp::drawPanel(Clock::time_point now) {
   const NetworkStats stats = client_.stats();
   if (frame_) rates_.frame_age_ms = static_cast<float>(systemMicros() - frame_->send_time_us) / 1000.0f;
   if (show_panel_) panel_.draw(frame_.get(), stats, rates_, options_.mouse_gaze || options_.gaze_at, render_mode_);
-  if (!stats.last_frame_arrival) {
+  if (study_) {
+    // Only the study's own words: a restart's silence is part of the blank, not news.
+    if (!study_->prompt().empty()) drawCentredText(study_->prompt().c_str());
+  } else if (!stats.last_frame_arrival) {
     drawCentredText(("waiting for server at " + options_.endpoints.frames).c_str());
   } else if (now - *stats.last_frame_arrival > kServerSilence) {
     drawCentredText("server silent: waiting for server (reconnecting)");
@@ -277,6 +319,25 @@ void ViewerApp::writeSnapshot() {
   }
   std::fprintf(stderr, "sph_viewer: wrote %s (%dx%d, %d frames)\n", options_.snapshot.c_str(), image.width,
                image.height, frames_shown_);
+  if (!options_.panel_text.empty() && frame_) {
+    // The panel's figures as text, from the frame the picture shows, for scripts and tests.
+    std::FILE* out = std::fopen(options_.panel_text.c_str(), "w");
+    if (out == nullptr) {
+      std::fprintf(stderr, "sph_viewer: cannot write %s\n", options_.panel_text.c_str());
+      exit_code_ = ExitCode::kSnapshotFailed;
+      return;
+    }
+    std::fprintf(out, "particles %zu: %s\n", frame_->particleCount(), levelCountsText(*frame_).c_str());
+    for (const std::string& line : foveationLines(*frame_)) std::fprintf(out, "%s\n", line.c_str());
+    std::fclose(out);
+  }
+}
+
+void ViewerApp::logFigures(Clock::time_point now) {
+  // A study's log names trials only: an operator's terminal in the participant's view is a cue.
+  if (!frame_ || study_ || now < next_log_) return;
+  next_log_ = now + kLogPeriod;
+  std::fprintf(stderr, "sph_viewer: %s\n", foveationLogLine(*frame_).c_str());
 }
 
 void ViewerApp::countRender(bool new_frame, Clock::time_point now) {
@@ -301,6 +362,8 @@ int runViewer(const ViewerOptions& options) {
   try {
     ViewerApp app(options);
     return static_cast<int>(app.run());
+  } catch (const StudyOutputError& e) {
+    std::fprintf(stderr, "sph_viewer: %s\n", e.what());
   } catch (const WindowError& e) {
     std::fprintf(stderr, "sph_viewer: %s\n", e.what());
   } catch (const std::exception& e) {

@@ -19,6 +19,7 @@
 #include "particle_renderer.h"
 #include "render_target.h"
 #include "stats_panel.h"
+#include "study_runner.h"
 #include "timing_report.h"
 #include "viewer_options.h"
 #include "window_session.h"
@@ -31,10 +32,11 @@ extern std::atomic<bool> g_stop_requested;
 // The process exit codes of sph_viewer (also in its --help and README).
 enum class ExitCode : int {
   kOk = 0,
-  kStartFailed = 1,    // no display, no OpenGL 3.3, or an endpoint that cannot be connected
-  kUsage = 2,          // bad command line (viewer_options.cpp)
-  kTimeout = 3,        // --timeout passed before --frames frames arrived (a snapshot is still written)
-  kSnapshotFailed = 4  // the snapshot PNG could not be written
+  kStartFailed = 1,     // no display, no OpenGL 3.3, or an endpoint that cannot be connected
+  kUsage = 2,           // bad command line (viewer_options.cpp)
+  kTimeout = 3,         // --timeout passed before --frames frames arrived (a snapshot is still written)
+  kSnapshotFailed = 4,  // the snapshot PNG could not be written
+  kStudyFailed = 5      // --study: the server lacks a scene or setting the study names, or refused a request
 };
 
 class ViewerApp {
@@ -60,6 +62,11 @@ class ViewerApp {
   void drawOutlines();
   void drawPanel(Clock::time_point now);
   void writeSnapshot();
+  // Every few seconds the method's figures (foveation_readout.h) on stderr.
+  void logFigures(Clock::time_point now);
+  // A study hides everything that would tell its participant what is shown.
+  bool hideCues() const { return study_ != nullptr; }
+  void handleStudyKeys(Clock::time_point now);
   void countRender(bool new_frame, Clock::time_point now);
 
   const ViewerOptions& options_;
@@ -75,6 +82,7 @@ class ViewerApp {
   LineRenderer lines_;
   RenderTarget target_;
   StatsPanel panel_;
+  std::unique_ptr<StudyRunner> study_;  // --study
 
   OrbitCamera camera_;
   OrbitCamera initial_camera_;
@@ -94,6 +102,7 @@ class ViewerApp {
   Clock::time_point last_render_;  // when the last picture started (--max-fps)
   int renders_since_fps_ = 0;
   Clock::time_point last_gaze_time_;
+  Clock::time_point next_log_{};
   ExitCode exit_code_ = ExitCode::kOk;
 };
 

@@ -19,7 +19,7 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
       "H hides the panel, Esc quits."};
   cli::prepare(app, "sph_viewer",
                "3 timed out: no frame from the server within --timeout or --duration; 4 the snapshot could not "
-               "be written");
+               "be written; 5 --study: the server lacks a scene or setting the study names, or refused a request");
   app.add_option("--frames-endpoint", o.endpoints.frames, "Frame PUB socket of the server (SUB, newest only)")
       ->capture_default_str();
   app.add_option("--gaze-endpoint", o.endpoints.gaze, "Gaze input of the server (--mouse-gaze sends here)")
@@ -91,6 +91,14 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   auto* timeout_opt =
       app.add_option("--timeout", o.timeout_s, "Give up after this many seconds (exit 3; default 30 with --snapshot)")
           ->check(CLI::NonNegativeNumber);
+  auto* panel_text_opt =
+      app.add_option("--panel-text", o.panel_text, "With --snapshot: also write the panel's figures to this text file");
+  std::string study_file;
+  auto* study_opt = app.add_option("--study", study_file,
+                                   "Run the blind comparison study this JSON file describes (client_viewer/README.md, "
+                                   "\"User studies\") and exit");
+  app.add_option("--study-out", o.study_out,
+                 "With --study: the trials' CSV here, its summary beside it (default: <study name>_<seed>.csv)");
   app.add_flag("--report", o.report, "Print render rate and frame-arrival-to-pixels times on exit");
   if (auto code = cli::parse(app, argc, argv)) return *code;
   try {
@@ -110,6 +118,17 @@ std::optional<int> parseOptions(int argc, char** argv, ViewerOptions& o) {
   }
   if (o.render_debug == RenderDebug::kThickness && o.render != RenderMode::kFluid) {
     return cli::usageError(app, "--render-debug thickness needs --render fluid");
+  }
+  if (panel_text_opt->count() > 0 && o.snapshot.empty()) return cli::usageError(app, "--panel-text needs --snapshot");
+  if (study_opt->count() > 0) {
+    if (!o.snapshot.empty()) return cli::usageError(app, "--study and --snapshot do not go together");
+    try {
+      o.study = loadStudyPlan(study_file);
+    } catch (const StudyFileError& e) {
+      return cli::usageError(app, e.what());
+    }
+  } else if (!o.study_out.empty()) {
+    return cli::usageError(app, "--study-out needs --study");
   }
   if (o.viewer_id.empty()) o.viewer_id = "viewer-" + std::to_string(::getpid());
   if (!o.snapshot.empty()) {

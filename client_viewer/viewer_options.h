@@ -8,6 +8,7 @@
 #include "network_client.h"
 #include "particle_renderer.h"
 #include "render_settings.h"
+#include "study_plan.h"
 
 namespace viewer {
 
@@ -31,12 +32,16 @@ struct ViewerOptions {
   float fov_y_degrees = 45.0f;
   // Headless / scripted runs
   std::string snapshot;         // PNG path; implies a hidden window unless --visible
+  std::string panel_text;       // with --snapshot: the panel's figures as text here too
   bool visible = true;          // resolved: false for --snapshot unless --visible was given
   int frames = 0;               // server frames to show before the snapshot / exit (0: run until closed)
   double snapshot_at_s = -1.0;  // with --snapshot: at the first frame of this sim time instead (< 0: off)
   double duration_s = 0.0;      // with --snapshot: take it after this much wall time (0: off)
   double timeout_s = 0.0;       // give up after this long (0: never; --snapshot defaults to 30)
   bool report = false;          // print render rate and frame-arrival-to-pixels figures on exit
+  // A blind comparison study (--study): the plan, checked, and where its results go.
+  std::optional<StudyPlan> study;
+  std::string study_out;
 };
 
 // Parses argv. Returns std::nullopt to go on, or an exit code (0 after --help, 2 on a bad option)

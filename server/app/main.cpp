@@ -91,6 +91,10 @@ void addOptions(CLI::App& cli, CliOptions& o) {
   cli.add_option("--max-steps", sim.max_steps, "stop after this many steps (0: run until SIGINT/SIGTERM)")
       ->check(cli::nonNegative())
       ->capture_default_str();
+  cli.add_option("--slow-step-ms", sim.slow_step_ms,
+                 "tests and demos: wait this long in every step, as a slower machine would (0: off)")
+      ->check(cli::range(0.0, 10000.0))
+      ->capture_default_str();
   cli.option_defaults()->group("Network");
   cli.add_option("--frames-endpoint", ep.frames, "XPUB: frames out")->capture_default_str();
   cli.add_option("--gaze-endpoint", ep.gaze, "GazeSample in")->capture_default_str();

@@ -21,6 +21,9 @@ class RealtimeGovernor {
 
   double gain() const { return gain_; }
   double baseGain() const { return base_; }
+  double maxGain() const { return max_; }
+  // The gain at the most the governor may use: it cannot coarsen the periphery further.
+  bool atCeiling() const { return gain_ >= max_; }
   // Simulated over wall-clock seconds in the last window (1: real time; 0 before the first).
   double realtimeRatio() const { return ratio_; }
 

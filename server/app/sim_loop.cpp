@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <thread>
 #include <utility>
 
+#include "app/foveation_echo.h"
 #include "net/input_validation.h"
 #include "sph/checkpoint.h"
 
@@ -127,6 +129,7 @@ void SimLoop::run() {
         spdlog::error("step {} failed, pausing: {}", session_.sim().stepCount(), e.what());
         settings_.paused = true;
       }
+      if (options_.slow_step_ms > 0.0) std::this_thread::sleep_for(seconds(options_.slow_step_ms / 1000.0));
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
       countFoveatedStep();
@@ -251,11 +254,13 @@ void SimLoop::publish(Clock::time_point now) {
     gaze_echo_.mode = net::toProtoGazeMode(stats.gaze_mode);
     gaze_echo_.x = stats.gaze_x;
     gaze_echo_.y = stats.gaze_y;
+    if (session_.method() == sph::Method::Foveated) foveatedGazePoint(stats, gaze_echo_.x, gaze_echo_.y);
     gaze_echo_.age_s = stats.gaze_age_s;
     gaze_echo_.radius = c->config().gaze_radius;
     gaze_echo_.ring_radius = c->config().gaze_ring_radius;
     info.gaze = gaze_echo_;
   }
+  info.foveation = foveationEcho(session_, kMaxPeripheryGain);
   info.camera = &camera_msg_;
   encoder_.setEncoding(settings_.quantized ? net::PositionEncoding::Quantized16 : net::PositionEncoding::Float32);
   encoder_.encode(session_.sim(), info);
@@ -286,9 +291,29 @@ void SimLoop::govern(Clock::time_point now, bool running) {
   } else {
     realtime_ratio_.store(0.0f);
   }
+  noteCeiling();
   governor_window_start_ = now;
   governor_window_sim_ = session_.sim().time();
   governor_busy_ = Clock::duration::zero();
+}
+
+void SimLoop::noteCeiling() {
+  // One line when the governor reaches its ceiling and one when it leaves it: at the ceiling the
+  // periphery is as coarse as the governor makes it, and real time is lost anyway.
+  const bool at_ceiling = session_.method() == sph::Method::Foveated && governor_.atCeiling();
+  if (at_ceiling == at_ceiling_) return;
+  at_ceiling_ = at_ceiling;
+  if (at_ceiling) {
+    spdlog::warn(
+        "real-time governor at its ceiling: periphery gain {:.1f}, {:.2f} of real time; the foveated "
+        "method cannot coarsen further (fewer threads, a smaller scene or a higher q would help)",
+        governor_.gain(), governor_.realtimeRatio());
+  } else if (session_.method() == sph::Method::Foveated) {
+    spdlog::info("real-time governor below its ceiling again: periphery gain {:.1f}", session_.peripheryGain());
+  } else {
+    spdlog::info("real-time governor below its ceiling again: the method is {} now",
+                 sph::methodName(session_.method()));
+  }
 }
 
 void SimLoop::countFoveatedStep() {
@@ -384,6 +409,12 @@ void SimLoop::fillCounters(gsph::v1::ServerStatus& status) const {
   status.set_quality(static_cast<float>(session_.quality()));
   status.set_periphery_gain(static_cast<float>(session_.peripheryGain()));
   status.set_realtime_ratio(realtime_ratio_.load());
+  const net::FoveationEcho foveation = foveationEcho(session_, kMaxPeripheryGain);
+  status.set_periphery_gain_ceiling(foveation.periphery_gain_ceiling);
+  status.set_visible_count(foveation.visible);
+  status.set_over_budget_count(foveation.over_budget);
+  status.set_fovea_width_arcmin(foveation.fovea_width_arcmin);
+  status.set_fovea_mar_arcmin(foveation.fovea_mar_arcmin);
 }
 
 }  // namespace app

@@ -43,8 +43,11 @@ struct SimLoopOptions {
   bool velocities = false;
   bool neighbor_counts = false;  // per-particle neighbour counts in frames (viewer's spray)
   int threads = 2;
-  std::string camera_source;       // empty: the most recent pose from any viewer
-  std::int64_t max_steps = 0;      // stop after this many steps of this run (0: run until stopped)
+  std::string camera_source;   // empty: the most recent pose from any viewer
+  std::int64_t max_steps = 0;  // stop after this many steps of this run (0: run until stopped)
+  // Milliseconds added to every step, as a slower machine would take them (tests of the real-time
+  // governor at its ceiling; 0: none).
+  double slow_step_ms = 0.0;
   double status_interval_s = 5.0;  // periodic one-line status (0: off)
   // At most one line per interval for each kind of refused input (control refusals here, rejected
   // messages in net::RejectionLog).
@@ -104,6 +107,8 @@ class SimLoop {
   void refreshStatusLine(Clock::time_point now);
   // After each governor window: the foveated method's periphery gain for the next.
   void govern(Clock::time_point now, bool running);
+  // Logs the governor reaching its ceiling gain, and leaving it, once each time.
+  void noteCeiling();
 
   SimLoopOptions options_;
   net::InputMailbox& mailbox_;
@@ -145,6 +150,7 @@ class SimLoop {
   double governor_window_sim_ = 0.0;
   Clock::duration governor_busy_{};
   std::atomic<float> realtime_ratio_{0.0f};
+  bool at_ceiling_ = false;  // the governor's gain at its ceiling, as last logged
   std::uint64_t frame_sequence_ = 0;
 
   SimCounters counters_;

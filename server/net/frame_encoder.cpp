@@ -129,6 +129,13 @@ const gsph::v1::Frame& FrameEncoder::encode(const sph::Simulation& sim, const Fr
   f.set_quality(info.quality);
   f.set_periphery_gain(info.periphery_gain);
   f.set_realtime_ratio(info.realtime_ratio);
+  const FoveationEcho& fov = info.foveation;
+  f.set_periphery_gain_ceiling(fov.periphery_gain_ceiling);
+  f.set_visible_count(fov.visible);
+  f.set_over_budget_count(fov.over_budget);
+  f.set_fovea_width_arcmin(fov.fovea_width_arcmin);
+  f.set_fovea_mar_arcmin(fov.fovea_mar_arcmin);
+  f.mutable_fovea_ring_radii()->Assign(fov.ring_radii.begin(), fov.ring_radii.end());
   f.set_particle_count(static_cast<std::uint32_t>(p.size()));
   setLevelCounts(sim, f);
 

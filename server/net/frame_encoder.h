@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 #include <zmq.hpp>
 
 #include "proto/sph.pb.h"
@@ -29,6 +30,16 @@ struct GazeEcho {
   std::string source_id;
 };
 
+// The foveated method's figures a frame carries beside q, g and the ratio (sph.proto, Frame).
+struct FoveationEcho {
+  float periphery_gain_ceiling = 0.0f;
+  std::uint32_t visible = 0;
+  std::uint32_t over_budget = 0;
+  float fovea_width_arcmin = 0.0f;
+  float fovea_mar_arcmin = 0.0f;
+  std::vector<float> ring_radii;  // where levels 1.. begin around the gaze, viewport widths
+};
+
 // What the frame says beyond the particle state.
 struct FrameInfo {
   std::uint64_t sequence = 0;
@@ -41,6 +52,8 @@ struct FrameInfo {
   float realtime_ratio = 0.0f;  // simulated over wall seconds lately; 0 when not measured
   GazeEcho gaze;
   const gsph::v1::CameraPose* camera = nullptr;  // the pose the projection uses; nullptr: none
+  // What the foveated method did (Frame's fields of the same names); zero and empty for the others.
+  FoveationEcho foveation;
 };
 
 gsph::v1::Method toProtoMethod(sph::Method m);

@@ -63,6 +63,33 @@ TEST(FrameEncoder, LevelRadiiAreEveryLevelsRadius) {
   EXPECT_EQ(f.radius_large(), f.level_radii(1));
 }
 
+TEST(FrameEncoder, FoveationFiguresAndRingsAreCarriedAndClearedOnReuse) {
+  sph::Simulation sim(testScene(), sph::Level{0});
+  net::FrameEncoder encoder;
+  net::FrameInfo info;
+  info.foveation.periphery_gain_ceiling = 16.0f;
+  info.foveation.visible = 900;
+  info.foveation.over_budget = 12;
+  info.foveation.fovea_width_arcmin = 2.5f;
+  info.foveation.fovea_mar_arcmin = 1.25f;
+  info.foveation.ring_radii = {0.0f, 0.02f, 0.05f};
+  encoder.encode(sim, info);
+  gsph::v1::Frame f = roundTrip(encoder);
+  EXPECT_EQ(f.periphery_gain_ceiling(), 16.0f);
+  EXPECT_EQ(f.visible_count(), 900u);
+  EXPECT_EQ(f.over_budget_count(), 12u);
+  EXPECT_EQ(f.fovea_width_arcmin(), 2.5f);
+  EXPECT_EQ(f.fovea_mar_arcmin(), 1.25f);
+  ASSERT_EQ(f.fovea_ring_radii_size(), 3);
+  EXPECT_EQ(f.fovea_ring_radii(2), 0.05f);
+  // Another method's frame in the same reused Frame: none of it left over.
+  encoder.encode(sim, net::FrameInfo{});
+  f = roundTrip(encoder);
+  EXPECT_EQ(f.fovea_ring_radii_size(), 0);
+  EXPECT_EQ(f.visible_count(), 0u);
+  EXPECT_EQ(f.periphery_gain_ceiling(), 0.0f);
+}
+
 TEST(FrameEncoder, CountsAreLevelsZeroAndOneOnly) {
   sph::Simulation sim(testScene(), sph::Level{0});
   sph::ParticleSet& p = sim.particles();

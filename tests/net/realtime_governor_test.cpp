@@ -21,8 +21,13 @@ TEST(RealtimeGovernor, BehindRealTimeTheGainGrowsWithTheShortfall) {
 
 TEST(RealtimeGovernor, TheGainStopsAtItsCeiling) {
   app::RealtimeGovernor g(1.0, 4.0);
+  EXPECT_FALSE(g.atCeiling());
   for (int w = 0; w < 20; ++w) g.update(0.1, 0.5, 0.5);
   EXPECT_DOUBLE_EQ(g.gain(), 4.0);
+  EXPECT_DOUBLE_EQ(g.maxGain(), 4.0);
+  EXPECT_TRUE(g.atCeiling());
+  g.reset(1.0);
+  EXPECT_FALSE(g.atCeiling());
 }
 
 TEST(RealtimeGovernor, WithTimeToSpareItReturnsToTheConfiguredGain) {

@@ -177,7 +177,7 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
   ASSERT_TRUE(server_a->waitForPose([&](const auto& p) { return matrixNear(p.view(), view, 1e-4); }, kWait))
       << readFile(dir + "/viewer.log");
   server_a.reset();
-  // Server B on the same frames endpoint, counting from 1 again, L0 (blue) particle.
+  // Server B on the same frames endpoint, counting from 1 again, an L0 particle.
   // (Pose, gaze and control of B are on new ports; only the frame stream is tested here.)
   TestServer server_b(makeFrame(oneParticle(0), 1), endpoint, 1);
   const auto deadline = std::chrono::steady_clock::now() + kWait;
@@ -192,7 +192,7 @@ TEST(ViewerNet, ReconnectsAfterAServerRestartAndShowsTheNewFrames) {
       projectToPixel(std::vector<float>(view.begin(), view.end()).data(),
                      std::vector<float>(projection.begin(), projection.end()).data(), {0, 0, 0}, kWidth, kHeight);
   const Colour c = pixel(image, static_cast<int>(centre[0]), static_cast<int>(centre[1]));
-  EXPECT_TRUE(isBlue(c)) << c.r << " " << c.g << " " << c.b;
+  EXPECT_TRUE(isL0(c)) << c.r << " " << c.g << " " << c.b;
 }
 
 TEST(ViewerGaze, FixedGazePointIsSent) {

@@ -1,7 +1,10 @@
 #include "viewer_process.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+
+#include "level_colours.h"
 
 namespace viewer_test {
 
@@ -30,8 +33,25 @@ Colour pixel(const viewer::RgbaImage& image, int x, int y) {
   return {p[0], p[1], p[2]};
 }
 
-bool isBlue(Colour c) { return c.b > 140 && c.b > c.r + 60 && c.b > c.g + 30; }
-bool isRed(Colour c) { return c.r > 140 && c.r > c.b + 60 && c.r > c.g + 60; }
+bool isLevel(Colour c, std::size_t level, std::size_t count) {
+  const double sum = c.r + c.g + c.b;
+  if (sum < 90) return false;  // the background, or a sphere's unlit rim
+  // By chromaticity: shading scales a colour, which keeps it; the highlight greys it a little.
+  std::size_t nearest = count;
+  double nearest_d = 1e9;
+  for (std::size_t k = 0; k < count; ++k) {
+    const viewer::LevelRgb l = viewer::levelColour(k, count);
+    const double lsum = l.r + l.g + l.b;
+    const double d = std::hypot(c.r / sum - l.r / lsum, c.g / sum - l.g / lsum, c.b / sum - l.b / lsum);
+    if (d < nearest_d) {
+      nearest_d = d;
+      nearest = k;
+    }
+  }
+  return nearest == level && nearest_d < 0.1;
+}
+bool isL0(Colour c) { return isLevel(c, 0, 2); }
+bool isL1(Colour c) { return isLevel(c, 1, 2); }
 bool isDark(Colour c) { return c.r < 40 && c.g < 40 && c.b < 40; }
 
 bool anyNear(const viewer::RgbaImage& image, double x, double y, int radius, bool (*test)(Colour)) {

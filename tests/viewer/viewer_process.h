@@ -32,8 +32,10 @@ struct Colour {
   int r, g, b;
 };
 Colour pixel(const viewer::RgbaImage& image, int x, int y);
-bool isBlue(Colour c);
-bool isRed(Colour c);
+// The colour particles mode gives level `level` of `count` (level_colours.h), shaded or not.
+bool isLevel(Colour c, std::size_t level, std::size_t count);
+bool isL0(Colour c);  // of a two-level frame
+bool isL1(Colour c);
 bool isDark(Colour c);
 // Some pixel within `radius` of (x, y) satisfies `test`.
 bool anyNear(const viewer::RgbaImage& image, double x, double y, int radius, bool (*test)(Colour));

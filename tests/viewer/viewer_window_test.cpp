@@ -8,6 +8,7 @@
 #include <string>
 
 #include "camera_reference.h"
+#include "level_colours.h"
 #include "support/reserved_port.h"
 #include "test_frames.h"
 #include "test_publisher.h"
@@ -58,13 +59,21 @@ viewer::RgbaImage loadPng(const std::string& path) {
   return image;
 }
 
-// What a pixel shows: background, an L0 (blue) or L1 (red) particle, or an outline (grey).
-// Shades along a sphere's rim change with sub-pixel shifts, so pictures are compared by this.
+// What a pixel shows: background, an L0 or L1 particle, or an outline (grey), by the nearest
+// chromaticity (shading scales a colour and keeps it). Shades along a sphere's rim change with
+// sub-pixel shifts, so pictures are compared by this.
 int pixelKind(Colour c) {
+  // The background is at most 26 bright; an L0 sphere's darkest shade (30 % of its colour) 41.
   const int brightest = std::max({c.r, c.g, c.b});
-  if (brightest < 45) return 0;
-  if (std::abs(c.r - c.b) < 30 && std::abs(c.r - c.g) < 30) return 3;
-  return c.b > c.r ? 1 : 2;
+  if (brightest < 35) return 0;
+  const double sum = c.r + c.g + c.b;
+  const auto distance = [&](double r, double g, double b) {
+    const double s = r + g + b;
+    return std::hypot(c.r / sum - r / s, c.g / sum - g / s, c.b / sum - b / s);
+  };
+  const viewer::LevelRgb l0 = viewer::levelColour(0, 2), l1 = viewer::levelColour(1, 2);
+  const double d[3] = {distance(l0.r, l0.g, l0.b), distance(l1.r, l1.g, l1.b), distance(1, 1, 1)};
+  return 1 + static_cast<int>(std::min_element(d, d + 3) - d);
 }
 
 // Every pixel of `a` has a pixel of the same kind in `b` at most one pixel away.
@@ -100,7 +109,7 @@ FrameSpec cloudInABox() {
 
 }  // namespace
 
-TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
+TEST(ViewerWindow, ParticlesAppearInTheirLevelsColourWhereProjected) {
   const std::string dir = scratchDir();
   FrameSpec spec = fourParticles();
   spec.with_gaze = true;  // circle of 0.1 W around the screen centre
@@ -121,9 +130,9 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
     const auto px = projectToPixel(pose.view().data(), pose.projection().data(), {p.x, p.y, p.z}, kWidth, kHeight);
     const Colour c = pixel(image, static_cast<int>(px[0]), static_cast<int>(px[1]));
     if (p.level == 0) {
-      EXPECT_TRUE(isBlue(c)) << "L0 at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
+      EXPECT_TRUE(isL0(c)) << "L0 at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
     } else {
-      EXPECT_TRUE(isRed(c)) << "L1 at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
+      EXPECT_TRUE(isL1(c)) << "L1 at " << px[0] << "," << px[1] << " is " << c.r << " " << c.g << " " << c.b;
     }
   }
   // Between the particles there is only background, so a picture that is all one colour fails.
@@ -138,8 +147,8 @@ TEST(ViewerWindow, ParticlesAppearBlueAndRedWhereProjected) {
   EXPECT_FALSE(anyNear(image, kWidth / 2.0, kHeight / 2.0, 3, yellow));
 }
 
-// One particle per size level, each level its own radius (level_radii) and colour: L0 blue,
-// L1 red, level 2 green, level 3 amber.
+// One particle per size level, each level its own radius (level_radii) and colour (the colour map
+// spread over the four levels).
 TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
   const std::string dir = scratchDir();
   FrameSpec spec;
@@ -160,9 +169,7 @@ TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
   gsph::v1::CameraPose pose;
   ASSERT_TRUE(server.waitForPose([](const auto& p) { return p.viewer_id() == "levels"; }, kWait, &pose));
   const auto image = loadPng(dir + "/levels.png");
-  const auto isGreen = [](Colour c) { return c.g > 140 && c.g > c.r + 60 && c.g > c.b + 60; };
-  const auto isAmber = [](Colour c) { return c.r > 180 && c.g > 110 && c.b < 100 && c.r > c.g + 30; };
-  const std::function<bool(Colour)> colourOf[] = {isBlue, isRed, isGreen, isAmber};
+  const auto colourOf = [](std::size_t level) { return [level](Colour c) { return isLevel(c, level, 4); }; };
   for (const auto& p : spec.particles) {
     const float r = spec.level_radii[p.level];
     const auto centre = projectToPixel(pose.view().data(), pose.projection().data(), {p.x, p.y, p.z}, kWidth, kHeight);
@@ -172,7 +179,7 @@ TEST(ViewerWindow, SizeLevelsDrawWithTheirRadiusAndColour) {
       return pixel(image, static_cast<int>(centre[0] + fraction * r_px), static_cast<int>(centre[1]));
     };
     const Colour c = at(0.0);
-    EXPECT_TRUE(colourOf[p.level](c)) << "level " << static_cast<int>(p.level) << " is " << c.r << " " << c.g << " "
+    EXPECT_TRUE(colourOf(p.level)(c)) << "level " << static_cast<int>(p.level) << " is " << c.r << " " << c.g << " "
                                       << c.b;
     EXPECT_FALSE(isDark(at(0.75))) << "level " << static_cast<int>(p.level) << " drawn smaller than its radius";
     EXPECT_TRUE(isDark(at(1.35))) << "level " << static_cast<int>(p.level) << " drawn larger than its radius";
@@ -196,8 +203,7 @@ TEST(ViewerWindow, QuantizedAndFloatFramesRenderTheSamePicture) {
   }
   int coloured = 0;
   for (int y = 0; y < images[0].height; ++y) {
-    for (int x = 0; x < images[0].width; ++x)
-      coloured += isBlue(pixel(images[0], x, y)) || isRed(pixel(images[0], x, y));
+    for (int x = 0; x < images[0].width; ++x) coloured += isL0(pixel(images[0], x, y)) || isL1(pixel(images[0], x, y));
   }
   EXPECT_GT(coloured, 2000);  // the cloud is really there
   std::string where;
