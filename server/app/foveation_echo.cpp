@@ -9,12 +9,6 @@
 
 namespace app {
 
-void foveatedGazePoint(const sph::AdaptiveStats& stats, double& x, double& y) {
-  const bool tracked = stats.gaze_mode == sph::GazeMode::Tracking || stats.gaze_mode == sph::GazeMode::Holding;
-  x = tracked ? stats.gaze_x : 0.5;
-  y = tracked ? stats.gaze_y : 0.5;
-}
-
 net::FoveationEcho foveationEcho(const SimSession& session, double gain_ceiling) {
   net::FoveationEcho echo;
   const sph::AdaptiveController* controller = session.controller();
@@ -32,10 +26,10 @@ net::FoveationEcho foveationEcho(const SimSession& session, double gain_ceiling)
   for (int k = 0; k < params.levels && k < sph::kMaxLevels; ++k) {
     widths.push_back(levels[static_cast<std::size_t>(k)].radius / levels[0].radius);
   }
-  double gx = 0.5, gy = 0.5;
-  foveatedGazePoint(stats, gx, gy);
+  // Around the gaze point the step used (AdaptiveStats::gaze_x).
   const sph::AdaptiveConfig& in_force = controller->config();
-  echo.ring_radii = sph::foveaRingRadii(in_force, widths, sph::displayTanHalf(in_force, controller->camera()), gx, gy);
+  echo.ring_radii = sph::foveaRingRadii(in_force, widths, sph::displayTanHalf(in_force, controller->camera()),
+                                        stats.gaze_x, stats.gaze_y);
   return echo;
 }
 

@@ -8,10 +8,6 @@
 
 namespace app {
 
-// The gaze point the foveated method's last step used: the sample's while tracking or holding, the
-// screen's centre once the gaze is lost (adaptive_controller.cpp).
-void foveatedGazePoint(const sph::AdaptiveStats& stats, double& x, double& y);
-
 // Empty for every method but foveated. `gain_ceiling`: the most periphery gain the governor may use.
 net::FoveationEcho foveationEcho(const SimSession& session, double gain_ceiling);
 

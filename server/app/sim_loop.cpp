@@ -254,7 +254,6 @@ void SimLoop::publish(Clock::time_point now) {
     gaze_echo_.mode = net::toProtoGazeMode(stats.gaze_mode);
     gaze_echo_.x = stats.gaze_x;
     gaze_echo_.y = stats.gaze_y;
-    if (session_.method() == sph::Method::Foveated) foveatedGazePoint(stats, gaze_echo_.x, gaze_echo_.y);
     gaze_echo_.age_s = stats.gaze_age_s;
     gaze_echo_.radius = c->config().gaze_radius;
     gaze_echo_.ring_radius = c->config().gaze_ring_radius;

@@ -54,11 +54,11 @@ void AdaptiveController::setMethod(Method method) {
 void AdaptiveController::apply(Simulation& sim) {
   stats_ = AdaptiveStats{};
   const GazeMode mode = rule_->gazeMode(gaze_, config_);
-  rule_->step(sim, RuleInput{config_, camera_, gaze_, mode, levels_}, changes_, stats_);
   stats_.gaze_mode = mode;
-  stats_.gaze_x = gaze_.x;
+  stats_.gaze_x = gaze_.x;  // the rule may put the point it used instead
   stats_.gaze_y = gaze_.y;
   stats_.gaze_age_s = gaze_.age_s;
+  rule_->step(sim, RuleInput{config_, camera_, gaze_, mode, levels_}, changes_, stats_);
 }
 
 std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, int levels, const AdaptiveConfig& config,

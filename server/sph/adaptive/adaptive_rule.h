@@ -27,7 +27,9 @@ struct AdaptiveStats {
   int fovea_level = -1;             // the level of the particle under the gaze; -1: none
   double fovea_width_arcmin = 0.0;  // that particle's angular width; 0: the gaze falls on no water
   double fovea_mar_arcmin = 0.0;    // the eye's minimum angle of resolution there
-  double gaze_x = 0.5;              // the gaze point the step used (normalized, origin top left)
+  // The gaze point the step used (normalized, origin top left): the sample's, or where the rule
+  // used another, that one (foveated: the screen's centre once the gaze is lost).
+  double gaze_x = 0.5;
   double gaze_y = 0.5;
   double gaze_age_s = 0.0;
 };

@@ -13,6 +13,8 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
   const bool tracked = in.mode == GazeMode::Tracking || in.mode == GazeMode::Holding;
   const double gx = tracked ? in.gaze.x : 0.5;
   const double gy = tracked ? in.gaze.y : 0.5;
+  stats.gaze_x = gx;
+  stats.gaze_y = gy;
   FoveatedView view;
   const DecisionCounts wanted = decideFoveated(sim, in.camera, gx, gy, in.config, false,
                                                changes.decisions(sim.particles().size()), scratch_, view);
