@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "sph/adaptive/display_geometry.h"
+#include "sph/adaptive/foveated_rules.h"
 #include "sph/thread_share.h"
 
 namespace sph {
@@ -16,23 +16,6 @@ namespace {
 
 // The gaze point's water: the nearest particle within this eccentricity.
 constexpr float kFoveaDeg = 1.0f;
-
-// How far a particle's neighbours spread across their thinnest direction, against their mean
-// spread: sqrt(smallest eigenvalue / mean eigenvalue) of the second moment of their offsets about
-// the particle. About the particle, not their centroid, so a ball and a half ball (a flat free
-// surface, a wall) both read 1; one layer of neighbours reads 0, two about 0.5. A spread of at
-// least `enough` may be returned as any value >= it.
-float neighbourSpread(const Eigen::Matrix3f& moment, float enough) {
-  const float mean = moment.trace() / 3.0f;
-  if (!(mean > 0.0f)) return 0.0f;  // no neighbours: a drop
-  // The smallest eigenvalue is at least det / ((trace - smallest) / 2)^2 >= det / (1.5 mean)^2:
-  // above `enough`, the eigenvalues are not needed.
-  const float lower_bound = moment.determinant() / (2.25f * mean * mean);
-  if (lower_bound >= enough * enough * mean) return std::sqrt(lower_bound / mean);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> eigen;
-  eigen.computeDirect(moment, Eigen::EigenvaluesOnly);
-  return std::sqrt(std::max(eigen.eigenvalues()(0), 0.0f) / mean);
-}
 
 }  // namespace
 
@@ -128,60 +111,45 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // In finest widths at the gaze; unseen water (inf) stays inf whatever its distance.
       const bool seen = std::isfinite(scratch.allowed[i]);
       const float allowed = seen ? scratch.allowed[i] * distance_ratio : scratch.allowed[i];
-      const float d = p.surface_distance[i];
-      int acuity = 0;
-      while (acuity < coarsest && width[acuity + 1] <= allowed) ++acuity;
-      int coarsen_ok = acuity;  // the eye allows it with the margin
-      while (coarsen_ok > 0 && width[coarsen_ok] * margin > allowed) --coarsen_ok;
-      if (d >= hidden_depth) acuity = coarsest;
-      if (d >= hidden_depth * margin) coarsen_ok = coarsest;
-      // The finest level among the neighbours, and within two hops: a merged particle sits
-      // between the two and reaches farther than either, so it must find no finer level there.
+      LevelBounds bounds = acuityBounds(allowed, width, coarsest, margin);
+      hiddenRule(bounds, p.surface_distance[i], hidden_depth, margin, coarsest);
+      const int eye_level = bounds.target;  // what the eye needs, for the further split passes
+      // The finest level among the neighbours, and within two hops (grading), and the second
+      // moment of the neighbours' offsets about i (shallow water).
       int finest_neighbour = coarsest;
       int finest_two_hops = scratch.finest_near[i];
-      Eigen::Matrix3f moment = Eigen::Matrix3f::Zero();  // second moment of the neighbours' offsets about i
+      Eigen::Matrix3f moment = Eigen::Matrix3f::Zero();
       for (const std::uint32_t j : grid.neighbors(i)) {
         finest_neighbour = std::min(finest_neighbour, levelIndex(p.level[j]));
         finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
         const Eigen::Vector3f r = p.position[j] - p.position[i];
         moment.noalias() += r * r.transpose();
       }
+      gradedRule(bounds, finest_neighbour, finest_two_hops);
       // How full the particle's support is: its density, which every level estimates alike. A
       // flat free surface fills about half of it; a sheet thinner than the support, a jet or a
-      // drop less. Coarsening needs the margin above the threshold.
-      const float fill = p.density[i] / rest_density;
-      const bool thin = fill < thin_fill;
-      const bool thin_after = fill < thin_fill * margin;
-      int target = std::min(acuity, finest_neighbour + 1);
-      // A merge makes level + 1: the eye must allow it with the margin, and it must stay graded
-      // (level + 1 <= the finest level within its reach + 1).
-      int coarsen_to = std::min(coarsen_ok - 1, finest_two_hops);
-      if (thin) target = std::min(target, thin_level);
-      if (thin_after) coarsen_to = std::min(coarsen_to, thin_level - 1);
-      // Shallow water: a particle whose neighbours lie nearly in one layer (a sheet spread on
-      // the floor) stays at most at the thin level; coarsening needs the margin.
-      if (target > thin_level || coarsen_to >= thin_level) {  // the eigenvalues only where they count
-        const float spread = neighbourSpread(moment, least_spread * margin);
-        if (spread < least_spread) target = std::min(target, thin_level);
-        if (spread < least_spread * margin) coarsen_to = std::min(coarsen_to, thin_level - 1);
+      // drop less.
+      thinRule(bounds, p.density[i] / rest_density, thin_fill, margin, thin_level);
+      if (shallowCounts(bounds, thin_level)) {
+        shallowRule(bounds, neighbourSpread(moment, least_spread * margin), least_spread, margin, thin_level);
       }
       // A merge needs the eye to have allowed the coarser level for the hold without a break
       // (counted once a step, by the step's first decision).
       if (!splits_only) {
-        const bool eye_allows = coarsen_ok > level;
+        const bool eye_allows = bounds.eye_margin > level;
         p.coarsen_wait[i] = eye_allows ? static_cast<std::uint16_t>(std::min(p.coarsen_wait[i] + 1, 65535)) : 0;
       }
       std::int8_t decision = kRemain;
-      if (level > target) {
+      if (level > bounds.target) {
         decision = kSplit;
-      } else if (!splits_only && level <= coarsen_to && level < coarsest && p.placed[i] == kNotPlaced &&
+      } else if (!splits_only && level < bounds.merge_upto && level < coarsest && p.placed[i] == kNotPlaced &&
                  p.coarsen_wait[i] >= hold_frames) {
         decision = kMerge;
       }
       out[i] = decision;
       // Seen water still coarser than the eye allows once this split is made (the frame after
       // this step shows level - 1).
-      if (seen && d < hidden_depth) still_coarse += level - (decision == kSplit) > acuity;
+      if (seen && p.surface_distance[i] < hidden_depth) still_coarse += level - (decision == kSplit) > eye_level;
       split_wanted += decision == kSplit;
       merge_wanted += decision == kMerge;
     }

@@ -1,7 +1,8 @@
 // The foveated method's decision: each particle's target level from what the eye can resolve where
 // it is seen, then SPLIT (one level finer) where a particle is coarser than its target and MERGE
 // (one level coarser, with a partner of its level) where the eye allows the next level with a
-// margin. docs/fluids.md, "Foveated water", gives the rules and why.
+// margin. docs/fluids.md, "Foveated water", gives the rules and why; each is a function of
+// foveated_rules.h.
 //
 //   acuity   a particle may look q MAR(e) / MAR(0) times as wide, in visual angle, as a finest
 //            particle at the gaze point (Guenter et al. 2012: MAR(e) = w0 + m e); its level is the
