@@ -31,6 +31,13 @@ inline Eigen::Vector3f screenDirection(float sx, float sy, float tan_half, float
   return {(2.0f * sx - 1.0f) * tan_half, (1.0f - 2.0f * sy) * tan_half / aspect, 1.0f};
 }
 
+// The angular radius of a disc `radius` viewport widths wide as the user sees it near the line of
+// sight, degrees (small angles: the foveated rule's and the perceptual budget's test of whether a
+// particle covers the gaze point).
+inline float discRadiusDeg(float radius, float tan_half) {
+  return static_cast<float>(kDegreesPerRadian) * 2.0f * tan_half * radius;
+}
+
 // The angle between two directions, degrees (atan2 of |a x b| and a . b: exact near 0 too).
 inline float angleDeg(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
   return static_cast<float>(kDegreesPerRadian) * std::atan2(a.cross(b).norm(), a.dot(b));

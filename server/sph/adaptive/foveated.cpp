@@ -80,11 +80,12 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       p.surface_distance[i] = d;
       scratch.depth[i] = depth;
       const float inf = std::numeric_limits<float>::infinity();
-      // The periphery gain spares the particle the gaze falls on (its disc, of this angular radius
-      // on the display near the line of sight, covers the gaze point): the governor coarsens the
-      // periphery, never the gaze point.
-      const float disc_deg = static_cast<float>(kDegreesPerRadian) * 2.0f * tan_half * disc.radius;
-      const bool gazed_on = e <= disc_deg;
+      // The periphery gain spares the particle the gaze falls on (its disc covers the gaze point)
+      // and those whose merge could cover it: a merged particle lands between its pair, at most
+      // half a support from either, and is 2^(1/3) as wide. The governor coarsens the periphery,
+      // never the gaze point.
+      const float merge_reach = std::cbrt(2.0f) + 0.5f * p.support[i] / p.radius[i];
+      const bool gazed_on = e <= discRadiusDeg(disc.radius, tan_half) * merge_reach;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
       // apart from the distance ratio, 0 behind the eye).
       scratch.allowed[i] = on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;

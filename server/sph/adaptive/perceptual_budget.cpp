@@ -71,19 +71,21 @@ PerceptualBudget PerceptualBudgetMeter::measure(const ParticleSet& p, const SimP
     if (owner != kNoOwner) seen_[owner] = 1;
   }
 
-  // The particle under the gaze: of the visible ones whose disc covers the gaze point, the
-  // nearest the eye (a tie keeps the lower index).
+  // The particle under the gaze: of the visible ones whose disc covers the gaze point (as the
+  // user sees the display: discRadiusDeg), the nearest the eye (a tie keeps the lower index).
   const auto gx = static_cast<float>(gaze_x), gy = static_cast<float>(gaze_y);
+  const float tan_half = displayTanHalf(config, camera);
+  const Eigen::Vector3f gaze_dir = screenDirection(gx, gy, tan_half, aspect);
   std::size_t gazed = n;
   float gazed_depth = inf;
   for (std::size_t i = 0; i < n; ++i) {
     if (seen_[i] == 0) continue;
     const Vec3& x = p.position[i];
     const FastScreenDisc disc = projector.projectFast(x, p.radius[i]);
-    const float dx = gx - disc.x, dy = (gy - disc.y) / aspect;
+    const float e = angleDeg(gaze_dir, screenDirection(disc.x, disc.y, tan_half, aspect));
     const float depth =
         fast.depth_row[0] * x.x() + fast.depth_row[1] * x.y() + fast.depth_row[2] * x.z() + fast.depth_row[3];
-    if (dx * dx + dy * dy <= disc.radius * disc.radius && depth < gazed_depth) {
+    if (e <= discRadiusDeg(disc.radius, tan_half) && depth < gazed_depth) {
       gazed_depth = depth;
       gazed = i;
     }
@@ -108,8 +110,6 @@ PerceptualBudget PerceptualBudgetMeter::measure(const ParticleSet& p, const SimP
     out.gaze_level = levelIndex(p.level[gazed]);
   }
 
-  const float tan_half = displayTanHalf(config, camera);
-  const Eigen::Vector3f gaze_dir = screenDirection(gx, gy, tan_half, aspect);
   const auto finest_radius = static_cast<float>(params.levelProps()[0].radius);
   const float finest_disc = finest_radius * fast.focal_over_width / reference_depth;
   const float reference_deg = discWidthDeg(gx, gy, finest_disc, tan_half, aspect);
