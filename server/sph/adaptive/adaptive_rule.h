@@ -1,6 +1,7 @@
 // One adaptive method: its levels, how it reads the gaze, and its rule for which particles split
 // and merge each step. The controller (adaptive_controller.h) holds one and knows no method by
-// name; adding a method is a rule of its own and a row of the method registry (method.cpp).
+// name; adding a method is a rule of its own, a row of the method registry (method.cpp) and a case
+// in makeAdaptiveRule (adaptive_rule.cpp).
 // docs/design.md, "Adding an adaptive method", walks through one.
 #pragma once
 
@@ -61,7 +62,7 @@ class AdaptiveRule {
   virtual void step(Simulation& sim, const RuleInput& in, LevelChanges& changes, AdaptiveStats& stats) = 0;
 };
 
-// The registry's rule for `method` (method.cpp); nullptr for Method::Regular.
+// The rule for `method`; nullptr for Method::Regular.
 std::unique_ptr<AdaptiveRule> makeAdaptiveRule(Method method);
 
 }  // namespace sph

@@ -1,34 +1,23 @@
 #include "sph/adaptive/method.h"
 
-#include <memory>
 #include <stdexcept>
 
-#include "sph/adaptive/adaptive_rule.h"
-#include "sph/adaptive/foveated_rule.h"
-#include "sph/adaptive/thesis_rules.h"
 #include "sph/param_table.h"
 
 namespace sph {
 
 namespace {
 
-// The method registry: a method's name, whether it needs a gaze source, and its rule.
+// The method registry: a method's name and whether it needs a gaze source (its rule:
+// makeAdaptiveRule, adaptive_rule.cpp).
 struct MethodEntry {
   Method method;
   const char* name;
   bool uses_gaze;
-  std::unique_ptr<AdaptiveRule> (*rule)();  // nullptr: no adaptive step
 };
-template <class Rule>
-std::unique_ptr<AdaptiveRule> make() {
-  return std::make_unique<Rule>();
-}
 constexpr MethodEntry kMethods[] = {
-    {Method::Regular, "regular", false, nullptr},
-    {Method::Surface, "surface", false, make<SurfaceRule>},
-    {Method::Gaze, "gaze", true, make<GazeRule>},
-    {Method::Hybrid, "hybrid", true, make<HybridRule>},
-    {Method::Foveated, "foveated", true, make<FoveatedRule>},
+    {Method::Regular, "regular", false}, {Method::Surface, "surface", false},  {Method::Gaze, "gaze", true},
+    {Method::Hybrid, "hybrid", true},    {Method::Foveated, "foveated", true},
 };
 
 const MethodEntry* entryOf(Method m) {
@@ -61,29 +50,9 @@ std::vector<std::string> methodNames() {
   return names;
 }
 
-std::unique_ptr<AdaptiveRule> makeAdaptiveRule(Method method) {
-  const MethodEntry* e = entryOf(method);
-  return e != nullptr && e->rule != nullptr ? e->rule() : nullptr;
-}
-
-Level startLevel(Method m, int levels) {
-  const std::unique_ptr<AdaptiveRule> rule = makeAdaptiveRule(m);
-  return rule != nullptr ? rule->coarsest(levels) : Level{0};
-}
-
-Level coarsestLevel(Method m, int levels) {
-  const std::unique_ptr<AdaptiveRule> rule = makeAdaptiveRule(m);
-  return rule != nullptr ? rule->coarsest(levels) : Level{1};
-}
-
 bool usesGaze(Method m) {
   const MethodEntry* e = entryOf(m);
   return e != nullptr && e->uses_gaze;
-}
-
-GazeMode AdaptiveRule::gazeMode(const GazeInput& gaze, const AdaptiveConfig& config) const {
-  if (!gaze.present || !(gaze.age_s <= config.gaze_hold_s)) return GazeMode::Fallback;
-  return gaze.age_s <= config.gaze_stale_s ? GazeMode::Tracking : GazeMode::Holding;
 }
 
 const char* gazeModeName(GazeMode m) {
