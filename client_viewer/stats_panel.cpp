@@ -2,6 +2,7 @@
 
 #include "foveation_readout.h"
 #include "level_colours.h"
+#include "study_plan.h"
 
 #include <imgui.h>
 
@@ -46,20 +47,8 @@ void showLevelLegend(const DecodedFrame& frame) {
 }  // namespace
 
 const char* methodName(gsph::v1::Method method) {
-  switch (method) {
-    case gsph::v1::METHOD_REGULAR:
-      return "regular";
-    case gsph::v1::METHOD_SURFACE:
-      return "surface";
-    case gsph::v1::METHOD_GAZE:
-      return "gaze";
-    case gsph::v1::METHOD_HYBRID:
-      return "hybrid";
-    case gsph::v1::METHOD_FOVEATED:
-      return "foveated";
-    default:
-      return "?";
-  }
+  const char* name = studyMethodName(method);
+  return name != nullptr ? name : "?";
 }
 
 void StatsPanel::showReply(const gsph::v1::ControlReply& reply) {
