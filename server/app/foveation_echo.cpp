@@ -12,7 +12,7 @@ namespace app {
 net::FoveationEcho foveationEcho(const SimSession& session, double gain_ceiling) {
   net::FoveationEcho echo;
   const sph::AdaptiveController* controller = session.controller();
-  if (session.method() != sph::Method::Foveated || controller == nullptr) return echo;
+  if (!sph::sizesByAcuity(session.method()) || controller == nullptr) return echo;
   const sph::AdaptiveStats& stats = controller->lastStats();
   echo.periphery_gain_ceiling = static_cast<float>(gain_ceiling);
   echo.visible = static_cast<std::uint32_t>(std::max(stats.visible, 0));

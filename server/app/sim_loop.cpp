@@ -212,10 +212,8 @@ void SimLoop::applyCamera() {
 }
 
 bool SimLoop::gazeWaiting() const {
-  const sph::Method m = session_.method();
   net::GazeArrival arrival;
-  return (m == sph::Method::Gaze || m == sph::Method::Hybrid) && mailbox_.latestGaze(arrival) &&
-         arrival.arrived != last_fed_gaze_;
+  return sph::refinesGazeCircle(session_.method()) && mailbox_.latestGaze(arrival) && arrival.arrived != last_fed_gaze_;
 }
 
 void SimLoop::feedGaze(sph::AdaptiveController& controller) {
@@ -279,7 +277,7 @@ void SimLoop::govern(Clock::time_point now, bool running) {
   const bool restarted = session_.sim().time() < governor_window_sim_;
   if (restarted) governor_.reset(session_.config().foveated_periphery_gain);
   const bool governed = options_.realtime_governor && running && !settings_.free_run && !restarted &&
-                        session_.method() == sph::Method::Foveated;
+                        sph::sizesByAcuity(session_.method());
   if (governed && window < kGovernorWindowS) return;
   if (governed) {
     const double sim_s = session_.sim().time() - governor_window_sim_;
@@ -299,7 +297,7 @@ void SimLoop::govern(Clock::time_point now, bool running) {
 void SimLoop::noteCeiling() {
   // One line when the governor reaches its ceiling and one when it leaves it: at the ceiling the
   // periphery is as coarse as the governor makes it, and real time is lost anyway.
-  const bool at_ceiling = session_.method() == sph::Method::Foveated && governor_.atCeiling();
+  const bool at_ceiling = sph::sizesByAcuity(session_.method()) && governor_.atCeiling();
   if (at_ceiling == at_ceiling_) return;
   at_ceiling_ = at_ceiling;
   if (at_ceiling) {
@@ -307,7 +305,7 @@ void SimLoop::noteCeiling() {
         "real-time governor at its ceiling: periphery gain {:.1f}, {:.2f} of real time; the foveated "
         "method cannot coarsen further (fewer threads, a smaller scene or a higher q would help)",
         governor_.gain(), governor_.realtimeRatio());
-  } else if (session_.method() == sph::Method::Foveated) {
+  } else if (sph::sizesByAcuity(session_.method())) {
     spdlog::info("real-time governor below its ceiling again: periphery gain {:.1f}", session_.peripheryGain());
   } else {
     spdlog::info("real-time governor below its ceiling again: the method is {} now",
@@ -317,7 +315,7 @@ void SimLoop::noteCeiling() {
 
 void SimLoop::countFoveatedStep() {
   const sph::AdaptiveController* controller = session_.controller();
-  if (session_.method() != sph::Method::Foveated || controller == nullptr) return;
+  if (!sph::sizesByAcuity(session_.method()) || controller == nullptr) return;
   const sph::AdaptiveStats& stats = controller->lastStats();
   ++gaze_steps_;
   gaze_on_water_steps_ += stats.fovea_level >= 0;
@@ -361,7 +359,7 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
       counters_.frames_dropped.load(), rejections_.total());
   const float ratio = realtime_ratio_.load();
   if (ratio > 0.0f) line += fmt::format(", {:.2f} of real time", ratio);
-  if (session_.method() == sph::Method::Foveated) {
+  if (sph::sizesByAcuity(session_.method())) {
     line += fmt::format(", q {:.2f}, periphery gain {:.1f}", session_.quality(), session_.peripheryGain());
     // Over the steps since the last logged status line: how often the gaze fell on visible water,
     // how often the water there was at the finest level, and the largest share of the visible

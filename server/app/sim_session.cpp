@@ -109,7 +109,7 @@ bool SimSession::setMethod(sph::Method method) {
   if (method == method_) return false;
   // Between methods of the same levels the controller switches in place; a method of other
   // levels needs another neighbour grid (and foveated's water starts coarsest): a restart.
-  if (controller_ != nullptr && method != sph::Method::Regular &&
+  if (controller_ != nullptr && sph::adapts(method) &&
       sph::coarsestLevel(method, scene_.params.levels) == sph::coarsestLevel(method_, scene_.params.levels)) {
     controller_->setMethod(method);
     method_ = method;
@@ -125,7 +125,7 @@ void SimSession::setConfig(const sph::AdaptiveConfig& config) {
 }
 
 sph::AdaptiveController* SimSession::foveatedController() const {
-  return method_ == sph::Method::Foveated ? controller_ : nullptr;
+  return sph::sizesByAcuity(method_) ? controller_ : nullptr;
 }
 
 void SimSession::setPeripheryGain(double gain) {

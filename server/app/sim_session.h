@@ -84,7 +84,7 @@ class SimSession {
 
  private:
   void start(const sph::Scene& scene, sph::Method method, const sph::AdaptiveConfig& config);
-  // The controller when the method is foveated, else null.
+  // The controller when the method sizes particles by acuity (sph::sizesByAcuity), else null.
   sph::AdaptiveController* foveatedController() const;
 
   std::string scene_dir_;
@@ -96,7 +96,7 @@ class SimSession {
   sph::AdaptiveConfig config_;
   BeforeAdaptiveStep before_;
   sph::Scene scene_;
-  sph::Method method_ = sph::Method::Regular;
+  sph::Method method_{};  // load() sets it
   sph::ScreenCamera camera_;
   bool camera_from_client_ = false;
   std::unique_ptr<sph::Simulation> sim_;

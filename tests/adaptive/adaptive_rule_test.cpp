@@ -65,7 +65,8 @@ TEST(AdaptiveRule, TheRegistryMapsEveryAdaptiveMethodToItsRule) {
   for (const std::string& name : sph::methodNames()) {
     sph::Method m{};
     ASSERT_TRUE(sph::methodByName(name, m));
-    if (m == sph::Method::Regular) continue;
+    EXPECT_EQ(sph::adapts(m), sph::makeAdaptiveRule(m) != nullptr) << name;
+    if (!sph::adapts(m)) continue;
     const auto rule = sph::makeAdaptiveRule(m);
     ASSERT_NE(rule, nullptr) << name;
     EXPECT_EQ(rule->method(), m) << name;
@@ -73,6 +74,12 @@ TEST(AdaptiveRule, TheRegistryMapsEveryAdaptiveMethodToItsRule) {
   }
   EXPECT_EQ(sph::coarsestLevel(sph::Method::Foveated, 6), sph::Level{5});
   EXPECT_EQ(sph::coarsestLevel(sph::Method::Hybrid, 6), sph::Level{1});
+  // What the server asks of a method by its traits, never by its name.
+  EXPECT_TRUE(sph::sizesByAcuity(sph::Method::Foveated));
+  EXPECT_FALSE(sph::sizesByAcuity(sph::Method::Hybrid));
+  EXPECT_TRUE(sph::refinesGazeCircle(sph::Method::Gaze));
+  EXPECT_TRUE(sph::refinesGazeCircle(sph::Method::Hybrid));
+  EXPECT_FALSE(sph::refinesGazeCircle(sph::Method::Foveated));
   EXPECT_THROW(sph::AdaptiveController(sph::Method::Regular, 4, {}, sph::ScreenCamera{}), std::invalid_argument);
 }
 

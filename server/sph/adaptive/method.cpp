@@ -8,16 +8,20 @@ namespace sph {
 
 namespace {
 
-// The method registry: a method's name and whether it needs a gaze source (its rule:
-// makeAdaptiveRule, adaptive_rule.cpp).
+// The method registry: a method's name and what the programs around it need to know of it (its
+// rule: makeAdaptiveRule, adaptive_rule.cpp).
 struct MethodEntry {
   Method method;
   const char* name;
+  bool adapts;
   bool uses_gaze;
+  bool gaze_circle;
+  bool acuity_sized;
 };
 constexpr MethodEntry kMethods[] = {
-    {Method::Regular, "regular", false}, {Method::Surface, "surface", false},  {Method::Gaze, "gaze", true},
-    {Method::Hybrid, "hybrid", true},    {Method::Foveated, "foveated", true},
+    {Method::Regular, "regular", false, false, false, false}, {Method::Surface, "surface", true, false, false, false},
+    {Method::Gaze, "gaze", true, true, true, false},          {Method::Hybrid, "hybrid", true, true, true, false},
+    {Method::Foveated, "foveated", true, true, false, true},
 };
 
 const MethodEntry* entryOf(Method m) {
@@ -50,9 +54,24 @@ std::vector<std::string> methodNames() {
   return names;
 }
 
+bool adapts(Method m) {
+  const MethodEntry* e = entryOf(m);
+  return e != nullptr && e->adapts;
+}
+
 bool usesGaze(Method m) {
   const MethodEntry* e = entryOf(m);
   return e != nullptr && e->uses_gaze;
+}
+
+bool refinesGazeCircle(Method m) {
+  const MethodEntry* e = entryOf(m);
+  return e != nullptr && e->gaze_circle;
+}
+
+bool sizesByAcuity(Method m) {
+  const MethodEntry* e = entryOf(m);
+  return e != nullptr && e->acuity_sized;
 }
 
 const char* gazeModeName(GazeMode m) {

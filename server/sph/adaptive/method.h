@@ -25,8 +25,17 @@ Level startLevel(Method m, int levels);
 // The coarsest level the method makes (AdaptiveRule::coarsest); L1 for regular, whose runs still
 // carry the thesis's two levels.
 Level coarsestLevel(Method m, int levels);
+// Every method but regular splits and merges particles: it has a rule (makeAdaptiveRule).
+bool adapts(Method m);
 // Gaze, hybrid and foveated refine where the eye looks, so they need a gaze source.
 bool usesGaze(Method m);
+// Gaze and hybrid refine a circle of fixed size around the gaze point (thesis 3.6.2): a server
+// steps as soon as a fresh sample arrives, so the circle follows the eye with the least delay.
+bool refinesGazeCircle(Method m);
+// Foveated sizes each particle by the eye's acuity where it is seen: it has a quality q and a
+// periphery gain (the real-time governor's knob), rings to draw, and measures what the eye gets
+// (perceptual_budget.h).
+bool sizesByAcuity(Method m);
 
 // Each field is a row of the settings table (sph/param_table.h), which holds its key, range and
 // unit: a new field needs its row there.
