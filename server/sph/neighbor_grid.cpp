@@ -44,7 +44,9 @@ void NeighborGrid::configure(const Aabb& bounds, float cell_size, std::size_t pa
   other_support_.reserve(particle_capacity);
   support_run_end_.reserve(particle_capacity);
   neighbor_start_.reserve(particle_capacity);
+  level_.reserve(particle_capacity);
   neighbor_index_.resize(particle_capacity * stride_ + 16);
+  neighbor_level_.resize(neighbor_index_.size());
 }
 
 void NeighborGrid::bin(const ParticleSet& particles) {
@@ -121,10 +123,13 @@ void NeighborGrid::build(const ParticleSet& particles) {
   findSupportRuns();
   const std::size_t n = particles.size();
   const auto build_block = neighborScanForms().buildBlockLists;
+  level_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) level_[i] = levelIndex(particles.level[i]);
   const SortedCandidates sorted{sorted_x_.data(), sorted_y_.data(), sorted_z_.data(), sorted_support_.data(),
                                 cell_particles_.data()};
   for (;;) {
-    if (neighbor_index_.size() < n * stride_) neighbor_index_.resize(n * stride_);
+    if (neighbor_index_.size() < n * stride_ + 16) neighbor_index_.resize(n * stride_ + 16);
+    neighbor_level_.resize(neighbor_index_.size());
     group_scratch_.resize(static_cast<std::size_t>(omp_get_max_threads()));
     for (auto& scratch : group_scratch_) {
       if (scratch.size() < (kMaxScanGroup - 1) * (stride_ + 16)) scratch.resize((kMaxScanGroup - 1) * (stride_ + 16));
@@ -145,7 +150,9 @@ void NeighborGrid::build(const ParticleSet& particles) {
                          neighbor_count_.data(),
                          other_support_.data(),
                          neighbor_start_.data(),
-                         stride_};
+                         stride_,
+                         level_.data(),
+                         neighbor_level_.data()};
     const std::size_t blocks = blockCount(n);
 #pragma omp parallel for schedule(dynamic, 1) reduction(max : max_count)
     for (std::size_t b = 0; b < blocks; ++b) {

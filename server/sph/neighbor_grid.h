@@ -37,6 +37,9 @@ class NeighborGrid {
     return {neighbor_index_.data() + neighbor_start_[i], neighbor_count_[i]};
   }
   std::uint32_t neighborCount(std::size_t i) const { return neighbor_count_[i]; }
+  // The levels of particle i's neighbours, in list order, where hasOtherSupport(i) (elsewhere
+  // stale). At least 16 bytes stay readable past any list, so a pass may load whole lanes.
+  const std::uint8_t* neighborLevels(std::size_t i) const { return neighbor_level_.data() + neighbor_start_[i]; }
 
   // Whether some neighbour of particle i may have another support radius than i (the other size
   // class: a mixed pair, eq. (3.35)); false where none of its candidates has (it is among its
@@ -103,6 +106,8 @@ class NeighborGrid {
   // their lists from the start of that range: the pair loops then stream the lists instead of
   // touching a fresh cache line for each particle (a fixed stride left most of each row empty).
   std::vector<std::uint32_t> neighbor_index_;
+  std::vector<std::uint8_t> neighbor_level_;  // neighborLevels: the level at each slot of neighbor_index_
+  std::vector<std::int32_t> level_;           // each particle's level, as the level fill gathers it
 };
 
 }  // namespace sph

@@ -35,6 +35,11 @@ inline void scanGroup(const CandidateRows& rows, const SortedCandidates& sorted,
   for (std::size_t g = 0; g < target_count; ++g) targets[g].count = scanOne(rows, sorted, targets[g], capacity);
 }
 
+// The levels of a list's neighbours, in list order (neighbor_block.inc).
+inline void fillLevels(const std::uint32_t* list, std::uint32_t count, const std::int32_t* level, std::uint8_t* out) {
+  for (std::uint32_t s = 0; s < count; ++s) out[s] = static_cast<std::uint8_t>(level[list[s]]);
+}
+
 }  // namespace
 
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,

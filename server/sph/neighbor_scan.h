@@ -76,6 +76,10 @@ struct BlockLists {
   std::uint8_t* other_support;  // per particle: 1 where its candidates have another support than its own
   std::size_t* neighbor_start;
   std::size_t stride;  // slots per particle; a list keeps at most stride - 1 entries
+  // Each particle's level, and per slot the level of the neighbour there (NeighborGrid::neighborLevels),
+  // written for the particles with another support among their candidates.
+  const std::int32_t* level;
+  std::uint8_t* neighbor_level;
 };
 
 // Writes the lists of particles [begin, end), and whether each one's candidates hold another

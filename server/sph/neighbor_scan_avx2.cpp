@@ -123,6 +123,21 @@ template <std::size_t kTargets>
   }
 }
 
+// The levels of a list's neighbours, in list order (neighbor_block.inc): 8 gathered at a time,
+// the tail one by one, so none is written past the list (the next block's lists may belong to
+// another thread).
+[[gnu::always_inline]] inline void fillLevels(const std::uint32_t* list, std::uint32_t count, const std::int32_t* level,
+                                              std::uint8_t* out) {
+  std::uint32_t b = 0;
+  for (; b + 8 <= count; b += 8) {
+    const __m256i j = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(list + b));
+    const __m256i k = _mm256_i32gather_epi32(reinterpret_cast<const int*>(level), j, 4);
+    const __m128i words = _mm_packus_epi32(_mm256_castsi256_si128(k), _mm256_extracti128_si256(k, 1));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + b), _mm_packus_epi16(words, words));
+  }
+  for (; b < count; ++b) out[b] = static_cast<std::uint8_t>(level[list[b]]);
+}
+
 }  // namespace
 
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,

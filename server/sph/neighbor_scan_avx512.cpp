@@ -104,6 +104,18 @@ template <std::size_t kTargets>
   }
 }
 
+// The levels of a list's neighbours, in list order (neighbor_block.inc): 16 gathered at a time,
+// none written past the list (the next block's lists may belong to another thread).
+[[gnu::always_inline]] inline void fillLevels(const std::uint32_t* list, std::uint32_t count, const std::int32_t* level,
+                                              std::uint8_t* out) {
+  for (std::uint32_t b = 0; b < count; b += 16) {
+    const __mmask16 live = lanes::liveLanes(count - b);
+    const __m512i j = _mm512_maskz_loadu_epi32(live, list + b);
+    const __m512i k = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, j, level, 4);
+    _mm_mask_storeu_epi8(out + b, live, _mm512_cvtepi32_epi8(k));
+  }
+}
+
 }  // namespace
 
 void scanCandidates(const CandidateRows& rows, const SortedCandidates& sorted, ScanTarget* targets,

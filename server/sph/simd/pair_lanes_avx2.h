@@ -17,6 +17,7 @@ struct Avx2Lanes {
   using F = __m256;
   using I = __m256i;
   using M = __m256;
+  using T = __m256;  // the table's first 8 entries: as many as there are levels
 
   static F set(float x) { return _mm256_set1_ps(x); }
   static F zero() { return _mm256_setzero_ps(); }
@@ -27,6 +28,13 @@ struct Avx2Lanes {
   static F load(const float* p, M m) { return _mm256_maskload_ps(p, _mm256_castps_si256(m)); }
   static void store(float* p, M m, F v) { _mm256_maskstore_ps(p, _mm256_castps_si256(m), v); }
   static F gather(M m, I j, const float* base) { return lanes2::gather(m, j, base); }
+  // Reads 8 bytes whatever the mask (NeighborGrid::neighborLevels keeps them readable).
+  static I loadLevels(const std::uint8_t* p, M m) {
+    const __m256i k = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)));
+    return _mm256_and_si256(k, _mm256_castps_si256(m));
+  }
+  static T table(const float* p) { return _mm256_loadu_ps(p); }
+  static F lookup(T t, I k) { return _mm256_permutevar8x32_ps(t, k); }
   static void gatherTriples(M m, const std::uint32_t* list, const float* base, F& x, F& y, F& z) {
     lanes2::gatherTriples(m, list, base, x, y, z);
   }

@@ -16,6 +16,7 @@ struct Avx512Lanes {
   using F = __m512;
   using I = __m512i;
   using M = __mmask16;
+  using T = __m512;
 
   static F set(float x) { return _mm512_set1_ps(x); }
   static F zero() { return _mm512_setzero_ps(); }
@@ -24,6 +25,9 @@ struct Avx512Lanes {
   static F load(const float* p, M m) { return _mm512_maskz_loadu_ps(m, p); }
   static void store(float* p, M m, F v) { _mm512_mask_storeu_ps(p, m, v); }
   static F gather(M m, I j, const float* base) { return lanes::gather(m, j, base); }
+  static I loadLevels(const std::uint8_t* p, M m) { return _mm512_maskz_cvtepu8_epi32(m, _mm_maskz_loadu_epi8(m, p)); }
+  static T table(const float* p) { return _mm512_loadu_ps(p); }
+  static F lookup(T t, I k) { return _mm512_permutexvar_ps(k, t); }
   static void gatherTriples(M m, const std::uint32_t* list, const float* base, F& x, F& y, F& z) {
     lanes::gatherTriples(m, list, base, x, y, z);
   }

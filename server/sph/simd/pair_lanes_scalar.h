@@ -10,6 +10,9 @@
 //   load(p, m), store(p, m, v)  p[l] on the live lanes (0 on dead lanes), written on the live lanes
 //   gather(m, j, base)     base[j_l] (0 on dead lanes)
 //   gatherTriples(m, list, base, x, y, z)  base[3 j + 0, 1, 2] for j = list[l] (0 on dead lanes)
+//   loadLevels(p, m)       the bytes p[l] as index lanes on the live lanes (0 on dead lanes)
+//   L::T, table(p)         a table of 16 floats (AVX2 keeps the first 8)
+//   lookup(t, k)           t[k_l], k_l < 8: a register permute, not a memory gather
 //   le, lt, eq, neq        comparisons -> M; any(m); andMask(a, b)
 //   select(m, a, b)        a where m, else b; maskz(m, a): a where m, else 0
 //   max, min, sqrt; sum(v), minOf(v): over the lanes
@@ -26,6 +29,7 @@ struct ScalarLanes {
   using F = float;
   using I = std::uint32_t;
   using M = bool;
+  using T = const float*;
 
   static F set(float x) { return x; }
   static F zero() { return 0.0f; }
@@ -34,6 +38,9 @@ struct ScalarLanes {
   static F load(const float* p, M) { return *p; }
   static void store(float* p, M, F v) { *p = v; }
   static F gather(M, I j, const float* base) { return base[j]; }
+  static I loadLevels(const std::uint8_t* p, M) { return *p; }
+  static T table(const float* p) { return p; }
+  static F lookup(T t, I k) { return t[k]; }
   static void gatherTriples(M, const std::uint32_t* list, const float* base, F& x, F& y, F& z) {
     const float* t = base + 3 * static_cast<std::size_t>(*list);
     x = t[0];

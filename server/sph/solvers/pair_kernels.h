@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <numbers>
 
 #include "sph/kernels.h"
 #include "sph/params.h"
@@ -21,6 +22,19 @@ struct PairKernels {
   // The run's levels (SimParams::levels): no particle is of a level at or past it.
   std::size_t count = kMaxLevels;
 
+  // Tables a pass looks up by a neighbour's level (the level each list slot holds:
+  // NeighborGrid::neighborLevels), 16 entries for a register of AVX-512 lanes, the first
+  // kMaxLevels used: each level's mass and support, and for a particle of level i the kernel of
+  // the mean support (h_i + h_j) / 2 of a pair with level j, computed in floats as pair_kernel.inc's
+  // meanSupportKernel computes it in lanes, so either gives the same bits.
+  using LevelTable = std::array<float, 16>;
+  static_assert(kMaxLevels <= 8, "the AVX2 lanes look up 8 entries");
+  LevelTable level_mass{};
+  LevelTable level_support{};
+  std::array<LevelTable, kMaxLevels> mean_inv_h{};
+  std::array<LevelTable, kMaxLevels> mean_sigma{};
+  std::array<LevelTable, kMaxLevels> mean_grad_scale{};
+
   CubicKernel& operator[](std::size_t c) { return classes[c]; }
   const CubicKernel& operator[](std::size_t c) const { return classes[c]; }
 
@@ -32,6 +46,17 @@ struct PairKernels {
     for (std::size_t c = 0; c < k.classes.size(); ++c) {
       k.classes[c] = CubicKernel::forSupport(levels[c].support);
       k.mass[c] = static_cast<float>(levels[c].mass);
+      k.level_mass[c] = k.mass[c];
+      k.level_support[c] = k.classes[c].h;
+    }
+    for (std::size_t i = 0; i < kMaxLevels; ++i) {
+      for (std::size_t j = 0; j < kMaxLevels; ++j) {
+        const float inv_h = 2.0f / (k.classes[i].h + k.classes[j].h);
+        const float inv_h2 = inv_h * inv_h;
+        k.mean_inv_h[i][j] = inv_h;
+        k.mean_sigma[i][j] = static_cast<float>(8.0 / std::numbers::pi) * inv_h2 * inv_h;
+        k.mean_grad_scale[i][j] = k.mean_sigma[i][j] * inv_h2;
+      }
     }
     return k;
   }
