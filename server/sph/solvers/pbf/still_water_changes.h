@@ -23,7 +23,7 @@
 
 #include "sph/neighbor_grid.h"
 #include "sph/particles.h"
-#include "sph/solvers/pbf_passes.h"
+#include "sph/solvers/pbf/pbf_passes.h"
 
 namespace sph {
 
