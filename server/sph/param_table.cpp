@@ -9,6 +9,10 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "sph/solvers/dfsph/dfsph_parameters.h"
+#include "sph/solvers/pbf/pbf_parameters.h"
+#include "sph/solvers/thesis/thesis_parameters.h"
+
 namespace sph {
 
 namespace {
@@ -45,11 +49,10 @@ std::string cell(const std::string& text) {
 constexpr const char* kCharacter = "surface, hybrid, gaze";
 constexpr const char* kGazed = "gaze, hybrid, foveated";
 
-// Every setting, the simulation parameters first; registerParameter adds to it. Ranges: min, max,
-// whether min and max themselves are excluded.
-std::vector<ParamSpec>& rows() {
-  using A = AdaptiveConfig;
-  static std::vector<ParamSpec> table = {
+// The simulation parameters every solver reads. Ranges: min, max, whether min and max themselves
+// are excluded.
+std::vector<ParamSpec> sharedRows() {
+  return {
       // The water and the frame (table 3.1).
       {"rest_density", nullptr, "all", &SimParams::rest_density, 0, kInf, true, true, "kg/m^3", "rest density rho0"},
       {"time_step", nullptr, "all", &SimParams::time_step, 0, kInf, true, true, "s",
@@ -68,53 +71,22 @@ std::vector<ParamSpec>& rows() {
       {"levels", nullptr, "all", &SimParams::levels, kMinLevels, kMaxLevels, false, false, "levels",
        "size levels the adaptive methods may use, L0 (the finest) to L(levels - 1), each twice the mass of the one "
        "below"},
-      // The thesis's forces (3.3-3.5).
-      {"gas_stiffness", nullptr, "thesis", &SimParams::gas_stiffness, 0, kInf, true, true, "m^2/s^2",
-       "k of the state equation p = k (rho - rho0), eq. (3.12)"},
-      {"viscosity", nullptr, "thesis", &SimParams::viscosity, 0, kInf, false, true, "Pa s",
-       "dynamic viscosity mu of the viscosity force, eq. (3.14)"},
-      {"surface_tension", nullptr, "thesis", &SimParams::surface_tension, 0, kInf, false, true, "N/m",
-       "sigma of the surface-tension force, eqs. (3.16)-(3.19)"},
-      {"surface_tension_enabled", nullptr, "thesis", &SimParams::surface_tension_enabled, 0, 1, false, false, "",
-       "surface tension where |n| >= l, eq. (3.36)"},
-      // The incompressible solvers' shared steps.
+  };
+}
+
+// The incompressible solvers' shared steps.
+std::vector<ParamSpec> incompressibleRows() {
+  return {
       {"substeps", nullptr, "pbf, dfsph", &SimParams::substeps, 1, 100, false, false, "",
        "solver steps a frame: pbf exactly this many, dfsph at least (its CFL bound may add)"},
       {"xsph_viscosity", nullptr, "pbf, dfsph", &SimParams::xsph_viscosity, 0, 1, false, false, "",
        "c of XSPH velocity smoothing, once a frame (MM13 eq. 17)"},
-      {"pbf_relaxation", nullptr, "pbf, dfsph", &SimParams::pbf_relaxation, 0, kInf, true, true, "",
-       "constraint force mixing, relative to a full neighbourhood's (MM13 eq. 11); dfsph's placement too"},
-      {"pbf_omega", nullptr, "pbf, dfsph", &SimParams::pbf_omega, 0, 1, true, false, "",
-       "relaxation of the Jacobi update, lambda += omega dlambda; dfsph's placement too"},
-      // Position based fluids (Macklin & Mueller 2013).
-      {"pbf_iterations", nullptr, "pbf", &SimParams::pbf_iterations, 1, 100, false, false, "",
-       "least Jacobi iterations of the density constraint a solver step (MM13 algorithm 1)"},
-      {"pbf_density_tolerance", nullptr, "pbf", &SimParams::pbf_density_tolerance, 0, kInf, false, true, "",
-       "past pbf_iterations, iterate on while the mean compression exceeds this; 0: exactly pbf_iterations"},
-      {"pbf_max_iterations", nullptr, "pbf", &SimParams::pbf_max_iterations, 1, 100, false, false, "",
-       "most Jacobi iterations a solver step"},
-      {"pbf_tensile_k", nullptr, "pbf", &SimParams::pbf_tensile_k, 0, kInf, false, true, "",
-       "k of the artificial pressure s_corr = -k (W(r) / W(dq h))^n (MM13 eq. 13); 0: off"},
-      {"pbf_tensile_dq", nullptr, "pbf", &SimParams::pbf_tensile_dq, 0, 1, true, true, "supports",
-       "dq of the artificial pressure"},
-      {"pbf_tensile_n", nullptr, "pbf", &SimParams::pbf_tensile_n, 1, 8, false, false, "",
-       "n of the artificial pressure"},
-      {"vorticity_confinement", nullptr, "pbf", &SimParams::vorticity_confinement, 0, kInf, false, true, "m/s",
-       "epsilon of vorticity confinement (MM13 eq. 16); 0: off"},
-      // Divergence-free SPH (Bender & Koschier 2015, 2017).
-      {"dfsph_cfl", "cfl", "dfsph", &SimParams::dfsph_cfl, 0, 1, true, false, "",
-       "no particle moves more than this share of its diameter in a solver step (BK17 eq. 15)"},
-      {"dfsph_max_substeps", "max_substeps", "dfsph", &SimParams::dfsph_max_substeps, 1, 1000, false, false, "",
-       "most solver steps a frame"},
-      {"dfsph_density_tolerance", "density_tolerance", "dfsph", &SimParams::dfsph_density_tolerance, 0, kInf, true,
-       true, "", "the constant-density solve stops at this mean compression after the step"},
-      {"dfsph_divergence_tolerance", "divergence_tolerance", "dfsph", &SimParams::dfsph_divergence_tolerance, 0, kInf,
-       true, true, "", "the divergence solve stops at this mean |d rho / dt| / rho0 * dt"},
-      {"dfsph_max_iterations", "max_iterations", "dfsph", &SimParams::dfsph_max_iterations, 1, 10000, false, false, "",
-       "most iterations of each solve a solver step"},
-      {"dfsph_conjugate_gradients", "conjugate_gradients", "dfsph", &SimParams::dfsph_conjugate_gradients, 0, 1, false,
-       false, "", "the constant-density solve turns from Jacobi to conjugate gradients after three iterations"},
+  };
+}
 
+std::vector<ParamSpec> adaptiveRows() {
+  using A = AdaptiveConfig;
+  return {
       // The character field (3.45, table 3.2): surface and hybrid, and gaze once the gaze is lost.
       {"alpha", nullptr, kCharacter, &A::alpha, 0, 1e6, false, false, "", "geometric weight of the character field"},
       {"beta", nullptr, kCharacter, &A::beta, 0, 1e6, false, false, "", "dynamic (pressure) weight"},
@@ -158,6 +130,19 @@ std::vector<ParamSpec>& rows() {
       {"foveated_merge_hold_s", nullptr, "foveated", &A::foveated_merge_hold_s, 0, 600, false, false, "s",
        "a merge waits until the eye has allowed the coarser level this long; 0: at once"},
   };
+}
+
+// Every setting, the simulation parameters first, a solver's own from its folder, in the order
+// docs/parameters.md lists them; registerParameter adds to it.
+std::vector<ParamSpec>& rows() {
+  static std::vector<ParamSpec> table = [] {
+    std::vector<ParamSpec> all;
+    for (const std::vector<ParamSpec>& part : {sharedRows(), thesisParameterRows(), incompressibleRows(),
+                                               pbfParameterRows(), dfsphParameterRows(), adaptiveRows()}) {
+      all.insert(all.end(), part.begin(), part.end());
+    }
+    return all;
+  }();
   return table;
 }
 

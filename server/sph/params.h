@@ -10,6 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "sph/solvers/dfsph/dfsph_parameters.h"
+#include "sph/solvers/pbf/pbf_parameters.h"
+#include "sph/solvers/thesis/thesis_parameters.h"
+
 namespace sph {
 
 // A particle's size level: L0 is the finest, and level k has mass 2^k m, so a split halves a
@@ -38,15 +42,15 @@ struct LevelProps {
 
 // Every field is a parameter of param_table.h, which gives its key, range and meaning; the
 // defaults here are the thesis's (thesisPreset), the other presets set their own (params.cpp).
-struct SimParams {
+// What one solver alone reads is declared in its folder (solvers/<name>/<name>_parameters.h) and
+// inherited, so `params.pbf_iterations` reads as the shared fields do. Being bases, they rule out
+// designated initializers: presets assign fields one by one.
+struct SimParams : ThesisParams, PbfParams, DfsphParams {
   std::string preset = "thesis";
   // The fluid solver that steps the particles, by its name in solvers/fluid_solver_factory.h.
   std::string solver = "thesis";
-  // Table 3.1.
+  // Table 3.1 (the forces are the thesis solver's: ThesisParams).
   double rest_density = 998.29;
-  double viscosity = 3.5;
-  double surface_tension = 0.0728;
-  double gas_stiffness = 3.0;
   double time_step = 0.01;
   double gravity = -9.81;
   // Table 3.2 (adaptive weights live with the methods).
@@ -54,7 +58,6 @@ struct SimParams {
   double mass_large = 0.02;
   double kernel_particles_small = 50.0;
   double kernel_particles_large = 20.0;
-  bool surface_tension_enabled = true;
   int resort_interval = 8;
   // How many size levels the adaptive methods may use, L0 to L(levels - 1); the thesis's methods
   // use the first two.
@@ -64,23 +67,6 @@ struct SimParams {
   // server publishes and the adaptive step follows); they take solver steps inside it.
   int substeps = 2;
   double xsph_viscosity = 0.01;
-  int pbf_iterations = 3;
-  double pbf_density_tolerance = 0.0;
-  int pbf_max_iterations = 20;
-  double pbf_relaxation = 0.01;
-  // The full Jacobi step (1) overshoots: neighbours correct each other's density at the same time,
-  // and a resting tank oscillates.
-  double pbf_omega = 0.5;
-  double pbf_tensile_k = 0.1;
-  double pbf_tensile_dq = 0.2;
-  int pbf_tensile_n = 4;
-  double vorticity_confinement = 0.0;
-  double dfsph_cfl = 0.4;
-  int dfsph_max_substeps = 40;
-  double dfsph_density_tolerance = 5e-4;
-  double dfsph_divergence_tolerance = 1e-3;
-  int dfsph_max_iterations = 100;
-  bool dfsph_conjugate_gradients = false;
 
   // Every level's properties up to kMaxLevels: L0 and L1 from table 3.2; Lk, k >= 2, has mass
   // 2^(k-1) mass_large and L1's kernel particles (the support grows with the particle).

@@ -1,7 +1,9 @@
 // The per-particle attributes, each declared once with what becomes of it when particles are
 // reordered, removed, split and merged. ParticleSet (particles.h) walks kParticleAttributes for
 // every one of those operations, so an attribute added here is moved, split and merged with the
-// others, and one left out of the table fails to compile (the static_assert below).
+// others, and one left out of the table fails to compile (the static_assert below). A solver's own
+// state is declared in its folder (solvers/<name>/<name>_attributes.h) the same way, and gathered
+// here: ParticleAttributes inherits its struct and kParticleAttributes takes in its table.
 #pragma once
 
 #include <Eigen/Core>
@@ -10,52 +12,19 @@
 #include <tuple>
 #include <vector>
 
+#include "sph/attribute_spec.h"
 #include "sph/params.h"
+#include "sph/solvers/dfsph/dfsph_attributes.h"
+#include "sph/solvers/pbf/pbf_attributes.h"
 
 namespace sph {
 
 using Vec3 = Eigen::Vector3f;
 
-// A particle splits into two of the level below, an L1 into two L0 children (eqs.
-// (3.37)-(3.39)); each child's attribute is:
-enum class SplitRule : std::uint8_t {
-  kCopy,     // the parent's value (velocity, eq. (3.39); position, then moved apart along the split axis)
-  kHalve,    // half the parent's value: an extensive quantity (mass, eq. (3.38); volume)
-  kReset,    // the attribute's reset value
-  kFreshId,  // the first child keeps the parent's value, the second its own fresh one (the id)
-  kLevel,    // the level below the parent's (L0 for L1; ParticleSet::setLevel: size class, radius, support)
-  kMark,     // kPlacedThisFrame for both: the adaptive step placed them (the `placed` flag)
-};
-
-// Two particles of a level merge into one of the level above, two L0 into one L1 (eqs.
-// (3.40)-(3.43)); the survivor's attribute is:
-enum class MergeRule : std::uint8_t {
-  kKeep,     // the survivor's own value (the id)
-  kAverage,  // the mean of the two: equal masses, so the centre of mass and momentum are kept
-  kSum,      // the sum: an extensive quantity (mass, eq. (3.41); volume)
-  kMin,      // the smaller (a distance: the nearer of the two is the merged particle's)
-  kMax,      // the larger
-  kReset,    // the attribute's reset value
-  kLevel,    // the level above the two's (L1 for L0; ParticleSet::setLevel)
-  kMark,     // kPlacedThisFrame: the adaptive step placed it (the `placed` flag)
-};
-
-struct ParticleAttributes;
-
-// Permute and swap-remove move every attribute with its particle: they need no rule.
-template <typename T>
-struct AttributeSpec {
-  using Value = T;
-  std::vector<T> ParticleAttributes::*member;
-  const char* name;
-  T reset_value;  // a new particle's value (ParticleSet::add, appendReset) and the kReset rules'
-  SplitRule split;
-  MergeRule merge;
-};
-
 // The attributes themselves (structure of arrays), public so that stages read them directly;
-// every vector has the same size. Declare a new one here AND in kParticleAttributes below.
-struct ParticleAttributes {
+// every vector has the same size. Declare a new one here AND in kParticleAttributes below; one
+// only a solver reads, in its folder's struct and table (read as the others are: `p.kappa`).
+struct ParticleAttributes : DfsphAttributes, PbfAttributes {
   std::vector<std::uint32_t> id;  // stable id, survives reordering
   std::vector<Level> level;       // L0 the finest (params.h)
   std::vector<float> mass;
@@ -74,12 +43,6 @@ struct ParticleAttributes {
   // from step to step (infinity until reached), and this step's one-hop update of it.
   std::vector<float> surface_distance;
   std::vector<float> surface_hop;
-  // dfsph: k = p / rho^2 of the constant-density and of the divergence solver in the last step,
-  // the next step's warm start (Bender & Koschier 2017, 4.3). A solver's own state, kept in this
-  // table because the table carries it with its particle through re-sorts, splits, merges and
-  // checkpoints.
-  std::vector<float> kappa;
-  std::vector<float> kappa_divergence;
   // Non-zero for a particle the adaptive step placed (a split's children, a merged particle), one of
   // the PlacedMark values below. Where a split or a merge puts a particle is a choice of the method,
   // not a motion of the water: pbf lets the density constraint move a placed particle without making
@@ -92,12 +55,6 @@ struct ParticleAttributes {
   // `foveated_merge_hold_s` of them (adaptive/foveated.h). A split's children and a merged
   // particle start again from 0.
   std::vector<std::uint16_t> coarsen_wait;
-  // pbf, a level change in still water (solvers/pbf/still_water_changes.h): how much denser
-  // (negative: less dense) than rest density the density constraint leaves the particle, kg/m^3,
-  // fading frame by frame; and the frames left in which a still particle keeps only part of the
-  // speed a step gives it.
-  std::vector<float> density_offset;
-  std::vector<std::uint8_t> still_damping;
 };
 
 // The values of ParticleAttributes::placed.
@@ -114,46 +71,44 @@ inline constexpr float kFar = std::numeric_limits<float>::infinity();
 
 // Attributes the next step recomputes before reading them (density to volume, acceleration,
 // normal length) still get the rule that describes them, so a frame sent between steps shows
-// sensible values.
-inline const auto kParticleAttributes = std::make_tuple(
-    AttributeSpec<std::uint32_t>{&ParticleAttributes::id, "id", 0u, SplitRule::kFreshId, MergeRule::kKeep},
-    AttributeSpec<Level>{&ParticleAttributes::level, "level", Level{0}, SplitRule::kLevel, MergeRule::kLevel},
-    AttributeSpec<float>{&ParticleAttributes::mass, "mass", 0.0f, SplitRule::kHalve, MergeRule::kSum},
-    AttributeSpec<float>{&ParticleAttributes::radius, "radius", 0.0f, SplitRule::kLevel, MergeRule::kLevel},
-    AttributeSpec<float>{&ParticleAttributes::support, "support", 0.0f, SplitRule::kLevel, MergeRule::kLevel},
-    AttributeSpec<Vec3>{&ParticleAttributes::position, "position", Vec3::Zero(), SplitRule::kCopy, MergeRule::kAverage},
-    AttributeSpec<Vec3>{&ParticleAttributes::velocity, "velocity", Vec3::Zero(), SplitRule::kCopy, MergeRule::kAverage},
-    AttributeSpec<Vec3>{&ParticleAttributes::acceleration, "acceleration", Vec3::Zero(), SplitRule::kCopy,
-                        MergeRule::kAverage},
-    AttributeSpec<float>{&ParticleAttributes::density, "density", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
-    AttributeSpec<float>{&ParticleAttributes::pressure, "pressure", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
-    // The surface criterion (3.44) asks |n| >= l of either: the merged particle is at the
-    // surface if one of the two was.
-    AttributeSpec<float>{&ParticleAttributes::normal_length, "normal_length", 0.0f, SplitRule::kCopy, MergeRule::kMax},
-    AttributeSpec<float>{&ParticleAttributes::pressure_term, "pressure_term", 0.0f, SplitRule::kCopy,
-                         MergeRule::kAverage},
-    AttributeSpec<float>{&ParticleAttributes::volume, "volume", 0.0f, SplitRule::kHalve, MergeRule::kSum},
-    AttributeSpec<float>{&ParticleAttributes::surface_distance, "surface_distance", detail::kFar, SplitRule::kCopy,
-                         MergeRule::kMin},
-    AttributeSpec<float>{&ParticleAttributes::surface_hop, "surface_hop", detail::kFar, SplitRule::kCopy,
-                         MergeRule::kMin},
-    // p / rho^2 is intensive: the children and the merged particle keep the field's value there,
-    // so the next step's warm start fits the water around them.
-    AttributeSpec<float>{&ParticleAttributes::kappa, "kappa", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
-    AttributeSpec<float>{&ParticleAttributes::kappa_divergence, "kappa_divergence", 0.0f, SplitRule::kCopy,
-                         MergeRule::kAverage},
-    AttributeSpec<std::uint8_t>{&ParticleAttributes::placed, "placed", std::uint8_t{0}, SplitRule::kMark,
-                                MergeRule::kMark},
-    AttributeSpec<std::uint16_t>{&ParticleAttributes::coarsen_wait, "coarsen_wait", std::uint16_t{0}, SplitRule::kReset,
-                                 MergeRule::kReset},
-    // An intensive quantity: the children and the merged particle keep the water's value there.
-    AttributeSpec<float>{&ParticleAttributes::density_offset, "density_offset", 0.0f, SplitRule::kCopy,
-                         MergeRule::kAverage},
-    AttributeSpec<std::uint8_t>{&ParticleAttributes::still_damping, "still_damping", std::uint8_t{0}, SplitRule::kCopy,
-                                MergeRule::kMax});
+// sensible values. The order is the one checkpoints (checkpoint.h) write and read attributes in,
+// which is why the solvers' tables sit between the shared ones.
+inline const auto kParticleAttributes = std::tuple_cat(
+    std::make_tuple(
+        AttributeSpec<std::uint32_t>{&ParticleAttributes::id, "id", 0u, SplitRule::kFreshId, MergeRule::kKeep},
+        AttributeSpec<Level>{&ParticleAttributes::level, "level", Level{0}, SplitRule::kLevel, MergeRule::kLevel},
+        AttributeSpec<float>{&ParticleAttributes::mass, "mass", 0.0f, SplitRule::kHalve, MergeRule::kSum},
+        AttributeSpec<float>{&ParticleAttributes::radius, "radius", 0.0f, SplitRule::kLevel, MergeRule::kLevel},
+        AttributeSpec<float>{&ParticleAttributes::support, "support", 0.0f, SplitRule::kLevel, MergeRule::kLevel},
+        AttributeSpec<Vec3>{&ParticleAttributes::position, "position", Vec3::Zero(), SplitRule::kCopy,
+                            MergeRule::kAverage},
+        AttributeSpec<Vec3>{&ParticleAttributes::velocity, "velocity", Vec3::Zero(), SplitRule::kCopy,
+                            MergeRule::kAverage},
+        AttributeSpec<Vec3>{&ParticleAttributes::acceleration, "acceleration", Vec3::Zero(), SplitRule::kCopy,
+                            MergeRule::kAverage},
+        AttributeSpec<float>{&ParticleAttributes::density, "density", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
+        AttributeSpec<float>{&ParticleAttributes::pressure, "pressure", 0.0f, SplitRule::kCopy, MergeRule::kAverage},
+        // The surface criterion (3.44) asks |n| >= l of either: the merged particle is at the
+        // surface if one of the two was.
+        AttributeSpec<float>{&ParticleAttributes::normal_length, "normal_length", 0.0f, SplitRule::kCopy,
+                             MergeRule::kMax},
+        AttributeSpec<float>{&ParticleAttributes::pressure_term, "pressure_term", 0.0f, SplitRule::kCopy,
+                             MergeRule::kAverage},
+        AttributeSpec<float>{&ParticleAttributes::volume, "volume", 0.0f, SplitRule::kHalve, MergeRule::kSum},
+        AttributeSpec<float>{&ParticleAttributes::surface_distance, "surface_distance", detail::kFar, SplitRule::kCopy,
+                             MergeRule::kMin},
+        AttributeSpec<float>{&ParticleAttributes::surface_hop, "surface_hop", detail::kFar, SplitRule::kCopy,
+                             MergeRule::kMin}),
+    kDfsphAttributes,
+    std::make_tuple(AttributeSpec<std::uint8_t>{&ParticleAttributes::placed, "placed", std::uint8_t{0},
+                                                SplitRule::kMark, MergeRule::kMark},
+                    AttributeSpec<std::uint16_t>{&ParticleAttributes::coarsen_wait, "coarsen_wait", std::uint16_t{0},
+                                                 SplitRule::kReset, MergeRule::kReset}),
+    kPbfAttributes);
 
-// Every vector is the same size, whatever its element type: a member of ParticleAttributes that is
-// missing from the table (or listed twice) changes one side of this and stops the build.
+// Every vector is the same size, whatever its element type: a member of ParticleAttributes (or of
+// a solver's struct it inherits) that is missing from the table, or listed twice, changes one side
+// of this and stops the build.
 static_assert(sizeof(ParticleAttributes) ==
                   std::tuple_size_v<std::remove_cv_t<decltype(kParticleAttributes)>> * sizeof(std::vector<float>),
               "every member of ParticleAttributes needs its entry (and rules) in kParticleAttributes");

@@ -1,6 +1,6 @@
 // Particle state as a structure of arrays. The attributes and their split and merge rules are
-// declared once, in particle_attributes.h; every operation here walks that declaration, so none
-// can be forgotten.
+// declared once, in particle_attributes.h (a solver's own in its folder, gathered there); every
+// operation here walks that declaration, so none can be forgotten.
 #pragma once
 
 #include <array>

@@ -12,7 +12,7 @@
 #include "sph/simd/simd_level.h"
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
-#include "sph/solvers/pbf_passes.h"
+#include "sph/solvers/pbf/pbf_passes.h"
 
 namespace {
 

@@ -22,7 +22,9 @@
 #include "sph/params.h"
 #include "sph/particles.h"
 #include "sph/solvers/incompressible_setup.h"
-#include "sph/solvers/pbf_passes.h"
+// pbf's passes, though dfsph places with them too: the placement is pbf's density constraint, run
+// locally.
+#include "sph/solvers/pbf/pbf_passes.h"
 
 namespace sph {
 

@@ -18,7 +18,8 @@
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
 #include "sph/solvers/pair_vectors.h"
-#include "sph/solvers/pbf_passes.h"
+// pbf's constraint constants, for the local placement (local_placement.h).
+#include "sph/solvers/pbf/pbf_passes.h"
 #include "sph/solvers/velocity_passes.h"
 
 namespace sph {

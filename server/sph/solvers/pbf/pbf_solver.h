@@ -16,8 +16,8 @@
 #include "sph/solvers/fluid_solver.h"
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
+#include "sph/solvers/pbf/pbf_passes.h"
 #include "sph/solvers/pbf/still_water_changes.h"
-#include "sph/solvers/pbf_passes.h"
 #include "sph/solvers/velocity_passes.h"
 
 namespace sph {

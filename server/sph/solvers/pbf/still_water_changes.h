@@ -7,11 +7,11 @@
 // placement (local_placement.h) has moved the fresh particles out of each other's way:
 // - every placed particle in still water, and its neighbours, keeps the density the change and
 //   the placement gave it as an offset of its constraint's rest density
-//   (ParticleAttributes::density_offset), which fades by 1 / kOffsetFadeFrames a frame: the water
+//   (PbfAttributes::density_offset), which fades by 1 / kOffsetFadeFrames a frame: the water
 //   takes the change up over a third of a second;
 // - still particles within two neighbour hops of the change, while its particles are placed or
 //   hold an offset beyond kTakingUp and kDampedFrames after, keep kStillDamping of the speed each
-//   step gives them (ParticleAttributes::still_damping): they settle without building the
+//   step gives them (PbfAttributes::still_damping): they settle without building the
 //   momentum that would carry them past their new places.
 // Water moving faster than kStillSpeed is untouched (the Martin & Moyce fronts move by tenths of a
 // per cent with this).
@@ -23,7 +23,7 @@
 
 #include "sph/neighbor_grid.h"
 #include "sph/particles.h"
-#include "sph/solvers/pbf_passes.h"
+#include "sph/solvers/pbf/pbf_passes.h"
 
 namespace sph {
 

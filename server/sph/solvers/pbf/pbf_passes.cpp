@@ -1,5 +1,5 @@
 // The scalar form of the pbf passes: pbf_passes.inc on one lane.
-#include "sph/solvers/pbf_passes.h"
+#include "sph/solvers/pbf/pbf_passes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 namespace sph::scalar {
 using Lanes = ScalarLanes;
-#include "sph/solvers/pbf_passes.inc"
+#include "sph/solvers/pbf/pbf_passes.inc"
 }  // namespace sph::scalar
 
 sph::PbfPassForms sph::pbfPassForms() {
