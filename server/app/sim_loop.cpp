@@ -132,7 +132,6 @@ void SimLoop::run() {
       if (options_.slow_step_ms > 0.0) std::this_thread::sleep_for(seconds(options_.slow_step_ms / 1000.0));
       counters_.steps.fetch_add(1);
       ++rate_window_steps_;
-      countFoveatedStep();
       now = Clock::now();
       governor_busy_ += now - step_start;
       // The frame that shows a new gaze sample's refinement goes out now, not at the next tick.
@@ -150,7 +149,7 @@ void SimLoop::run() {
       refreshStatusLine(now);
       spdlog::info("{}", statusLine());
       next_status_ = now + seconds(options_.status_interval_s);
-      gaze_steps_ = gaze_on_water_steps_ = gaze_finest_steps_ = 0;
+      gaze_frames_ = gaze_on_water_frames_ = gaze_finest_frames_ = 0;
       worst_over_budget_ = 0.0;
     }
     if (running && settings_.free_run) continue;
@@ -238,6 +237,7 @@ void SimLoop::feedGaze(sph::AdaptiveController& controller) {
 
 void SimLoop::publish(Clock::time_point now) {
   pacer_.published(now);
+  if (session_.measureEye()) countFoveatedFrame();
   net::FrameInfo info;
   info.sequence = frame_sequence_;
   info.scene = session_.scene().name;
@@ -313,13 +313,13 @@ void SimLoop::noteCeiling() {
   }
 }
 
-void SimLoop::countFoveatedStep() {
+void SimLoop::countFoveatedFrame() {
   const sph::AdaptiveController* controller = session_.controller();
   if (!sph::sizesByAcuity(session_.method()) || controller == nullptr) return;
   const sph::AdaptiveStats& stats = controller->lastStats();
-  ++gaze_steps_;
-  gaze_on_water_steps_ += stats.fovea_level >= 0;
-  gaze_finest_steps_ += stats.fovea_level == 0;
+  ++gaze_frames_;
+  gaze_on_water_frames_ += stats.fovea_level >= 0;
+  gaze_finest_frames_ += stats.fovea_level == 0;
   if (stats.visible > 0) {
     worst_over_budget_ = std::max(worst_over_budget_, static_cast<double>(stats.over_budget) / stats.visible);
   }
@@ -361,14 +361,15 @@ void SimLoop::refreshStatusLine(Clock::time_point now) {
   if (ratio > 0.0f) line += fmt::format(", {:.2f} of real time", ratio);
   if (sph::sizesByAcuity(session_.method())) {
     line += fmt::format(", q {:.2f}, periphery gain {:.1f}", session_.quality(), session_.peripheryGain());
-    // Over the steps since the last logged status line: how often the gaze fell on visible water,
-    // how often the water there was at the finest level, and the largest share of the visible
-    // particles over the perceptual budget (q at periphery gain 1) in a step.
-    if (gaze_steps_ > 0) {
-      line += fmt::format(", gaze on water in {:.0f} % of steps", 100.0 * gaze_on_water_steps_ / gaze_steps_);
-      if (gaze_on_water_steps_ > 0) {
+    // Over the frames published since the last logged status line (the eye is measured once a
+    // published frame): how often the gaze fell on visible water, how often the water there was
+    // at the finest level, and the largest share of the visible particles over the perceptual
+    // budget (q at periphery gain 1) in a frame.
+    if (gaze_frames_ > 0) {
+      line += fmt::format(", gaze on water in {:.0f} % of frames", 100.0 * gaze_on_water_frames_ / gaze_frames_);
+      if (gaze_on_water_frames_ > 0) {
         line += fmt::format(", at {} there in {:.0f} %", sph::levelName(sph::asLevel(0)),
-                            100.0 * gaze_finest_steps_ / gaze_on_water_steps_);
+                            100.0 * gaze_finest_frames_ / gaze_on_water_frames_);
       }
       line += fmt::format(", over the perceptual budget at most {:.2f} % of the visible", 100.0 * worst_over_budget_);
     }

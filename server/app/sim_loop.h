@@ -100,9 +100,10 @@ class SimLoop {
   Clock::time_point nextStepTime() const;
   void publish(Clock::time_point now);
   void fillCounters(gsph::v1::ServerStatus& status) const;
-  // After a step: where the foveated method's gaze point fell, and how much of the visible water
-  // was over the perceptual budget (the window's counts).
-  void countFoveatedStep();
+  // For a published frame the eye was measured for (SimSession::measureEye): where the foveated
+  // method's gaze point fell, and how much of the visible water was over the perceptual budget
+  // (the window's counts).
+  void countFoveatedFrame();
   void updateRates(Clock::time_point now);
   void refreshStatusLine(Clock::time_point now);
   // After each governor window: the foveated method's periphery gain for the next.
@@ -138,9 +139,9 @@ class SimLoop {
   std::int64_t rate_window_steps_ = 0;
   // foveated, since the last logged status line: steps, those whose gaze point fell on visible
   // water, and of those the ones that found it at the finest level (AdaptiveStats::fovea_level).
-  std::int64_t gaze_steps_ = 0;
-  std::int64_t gaze_on_water_steps_ = 0;
-  std::int64_t gaze_finest_steps_ = 0;
+  std::int64_t gaze_frames_ = 0;
+  std::int64_t gaze_on_water_frames_ = 0;
+  std::int64_t gaze_finest_frames_ = 0;
   // foveated, since the last logged status line: the largest share of the visible particles over
   // the perceptual budget in a step (AdaptiveStats::over_budget).
   double worst_over_budget_ = 0.0;

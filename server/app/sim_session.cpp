@@ -161,6 +161,7 @@ void SimSession::start(const sph::Scene& scene, sph::Method method, const sph::A
   sph::AdaptiveController* controller = nullptr;
   if (auto owned = sph::makeAdaptiveController(method, scene.params.levels, config, camera)) {
     controller = owned.get();
+    controller->setMeasureEachStep(false);  // measureEye: once per published frame
     sim->setAdaptiveStep(std::make_unique<FedAdaptiveStep>(std::move(owned), before_));
   }
   scene_ = scene;
@@ -169,6 +170,16 @@ void SimSession::start(const sph::Scene& scene, sph::Method method, const sph::A
   camera_ = camera;
   sim_ = std::move(sim);
   controller_ = controller;
+  measured_step_ = -1;
+}
+
+bool SimSession::measureEye() {
+  if (controller_ == nullptr || !sph::sizesByAcuity(method_)) return false;
+  const auto step = static_cast<std::int64_t>(sim_->stepCount());
+  if (step == measured_step_) return false;
+  measured_step_ = step;
+  controller_->measureEye(*sim_);
+  return true;
 }
 
 }  // namespace app

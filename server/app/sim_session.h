@@ -67,6 +67,10 @@ class SimSession {
   void setCamera(const sph::ScreenCamera& camera, bool from_client);
 
   void step() { sim_->step(); }
+  // What the eye gets from the particles as the last step left them (AdaptiveController::measureEye),
+  // into controller()->lastStats(), for a method that sizes particles by acuity; once per step at
+  // most. True when it measured (a step since the last measurement).
+  bool measureEye();
 
   bool loaded() const { return sim_ != nullptr; }
   sph::Simulation& sim() { return *sim_; }
@@ -96,7 +100,8 @@ class SimSession {
   sph::AdaptiveConfig config_;
   BeforeAdaptiveStep before_;
   sph::Scene scene_;
-  sph::Method method_{};  // load() sets it
+  sph::Method method_{};             // load() sets it
+  std::int64_t measured_step_ = -1;  // the step measureEye last measured
   sph::ScreenCamera camera_;
   bool camera_from_client_ = false;
   std::unique_ptr<sph::Simulation> sim_;

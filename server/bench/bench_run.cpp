@@ -97,6 +97,9 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   auto adaptive =
       sph::makeAdaptiveController(m, scene.params.levels, scene.adaptive, sph::cameraFromSpec(scene.camera));
   controller_ = adaptive.get();
+  // The perceptual meter is the bench's instrument, not the method's cost: it runs after the
+  // timed step (stepFrame), on the same particles.
+  if (controller_ != nullptr) controller_->setMeasureEachStep(false);
   sim_->setAdaptiveStep(std::move(adaptive));
   if (!options.load_state.empty()) sph::loadCheckpoint(*sim_, method, options.load_state);
   result_.scene = scene.name;
@@ -117,6 +120,7 @@ void SceneRun::stepFrame() {
   sim_->step();
   FrameRecord r;
   if (controller_) {
+    controller_->measureEye(*sim_);
     r.splits = controller_->lastStats().splits;
     r.merges = controller_->lastStats().merges;
     r.merge_unpaired = controller_->lastStats().merge_wanted - 2 * r.merges;

@@ -275,6 +275,30 @@ TEST(Foveated, ThePeripheryGainSparesTheGazePoint) {
   EXPECT_GT(on_water, 10) << "the gaze should fall on the water after the saccade";
 }
 
+// The eye measured on request (the server: once a published frame; the bench: outside its timed
+// step) gives what measuring at the end of every step gives, and nothing until asked.
+TEST(Foveated, TheEyeMeasuredOnRequestMatchesEveryStep) {
+  const sph::Scene scene = surgeScene("pbf");
+  Rig each = foveatedRig(scene);
+  Rig asked = foveatedRig(scene);
+  asked.controller->setMeasureEachStep(false);
+  for (int s = 0; s < 30; ++s) {
+    each.controller->setGaze(gazeAt(0.3, 0.6));
+    asked.controller->setGaze(gazeAt(0.3, 0.6));
+    each.sim->step();
+    asked.sim->step();
+    ASSERT_EQ(asked.controller->lastStats().visible, 0) << "frame " << s << ": measured unasked";
+    asked.controller->measureEye(*asked.sim);
+    const sph::AdaptiveStats& a = asked.controller->lastStats();
+    const sph::AdaptiveStats& e = each.controller->lastStats();
+    ASSERT_GT(e.visible, 0);
+    EXPECT_EQ(a.visible, e.visible) << "frame " << s;
+    EXPECT_EQ(a.over_budget, e.over_budget) << "frame " << s;
+    EXPECT_EQ(a.fovea_level, e.fovea_level) << "frame " << s;
+    EXPECT_EQ(a.fovea_width_arcmin, e.fovea_width_arcmin) << "frame " << s;
+  }
+}
+
 // After a saccade across the water, every seen particle near the new gaze point is as fine as
 // the eye resolves there (the finest level at the gaze point itself) within three frames.
 TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {

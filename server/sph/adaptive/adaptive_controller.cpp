@@ -59,6 +59,11 @@ void AdaptiveController::apply(Simulation& sim) {
   stats_.gaze_y = gaze_.y;
   stats_.gaze_age_s = gaze_.age_s;
   rule_->step(sim, RuleInput{config_, camera_, gaze_, mode, levels_}, changes_, stats_);
+  if (measure_each_step_) measureEye(sim);
+}
+
+void AdaptiveController::measureEye(const Simulation& sim) {
+  rule_->measure(sim, RuleInput{config_, camera_, gaze_, stats_.gaze_mode, levels_}, stats_);
 }
 
 std::unique_ptr<AdaptiveController> makeAdaptiveController(Method method, int levels, const AdaptiveConfig& config,

@@ -36,6 +36,12 @@ class AdaptiveController : public AdaptiveStep {
   const AdaptiveStats& lastStats() const { return stats_; }
 
   void apply(Simulation& sim) override;
+  // Measures what the eye gets (AdaptiveRule::measure) into lastStats(), from the particles as
+  // they are now. With measureEachStep (the default) every apply() ends with it; a caller that
+  // needs the figures less often (the server, once per published frame) or outside its timed step
+  // (the bench) turns that off and calls this itself.
+  void measureEye(const Simulation& sim);
+  void setMeasureEachStep(bool each_step) { measure_each_step_ = each_step; }
   Level coarsest() const override { return rule_->coarsest(levels_); }
 
  private:
@@ -46,6 +52,7 @@ class AdaptiveController : public AdaptiveStep {
   GazeInput gaze_;
   AdaptiveStats stats_;
   LevelChanges changes_;
+  bool measure_each_step_ = true;
 };
 
 // nullptr for Method::Regular.

@@ -60,6 +60,11 @@ class AdaptiveRule {
   // Decides this step's splits and merges, applies them through `changes` (LevelChanges::apply with
   // coarsest() and stragglerReach()) and fills the stats it owns; the controller fills the gaze's.
   virtual void step(Simulation& sim, const RuleInput& in, LevelChanges& changes, AdaptiveStats& stats) = 0;
+  // What the eye gets (perceptual_budget.h) from the particles as they are, into the stats'
+  // visible, over_budget and fovea fields, for a rule that sizes particles by the eye; nothing
+  // for the others. An instrument, not part of the method: the caller says when
+  // (AdaptiveController::measureEye), around the gaze point the last step used.
+  virtual void measure(const Simulation& /*sim*/, const RuleInput& /*in*/, AdaptiveStats& /*stats*/) {}
 };
 
 // The rule for `method`; nullptr for Method::Regular.

@@ -36,7 +36,11 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
     ++stats.split_passes;
     stats.splits += changes.applySplits(sim);
   }
-  const PerceptualBudget eye = meter_.measure(sim.particles(), sim.params(), in.camera, gx, gy, in.config);
+}
+
+void FoveatedRule::measure(const Simulation& sim, const RuleInput& in, AdaptiveStats& stats) {
+  const PerceptualBudget eye =
+      meter_.measure(sim.particles(), sim.params(), in.camera, stats.gaze_x, stats.gaze_y, in.config);
   stats.visible = eye.visible;
   stats.over_budget = eye.over_budget;
   stats.fovea_level = eye.gaze_level;

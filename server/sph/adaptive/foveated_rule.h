@@ -18,6 +18,7 @@ class FoveatedRule : public AdaptiveRule {
   // (grading) until it pairs, and where it may merge the eye does not resolve where its mass goes.
   float stragglerReach() const override { return 4.0f; }
   void step(Simulation& sim, const RuleInput& in, LevelChanges& changes, AdaptiveStats& stats) override;
+  void measure(const Simulation& sim, const RuleInput& in, AdaptiveStats& stats) override;
 
  private:
   FoveatedScratch scratch_;
