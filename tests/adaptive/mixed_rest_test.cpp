@@ -17,15 +17,15 @@ namespace {
 using adaptive_test::poolScene;
 
 struct Layering {
-  int small_sunk = 0;   // L0 particles more than an L0 spacing below the interface
-  int large_risen = 0;  // L1 particles more than an L0 spacing above it
-  int small_count = 0;
-  int large_count = 0;
+  int l0_sunk = 0;   // L0 particles more than an L0 spacing below the interface
+  int l1_risen = 0;  // L1 particles more than an L0 spacing above it
+  int l0_count = 0;
+  int l1_count = 0;
   double rms_speed = 0.0;
 };
 
 // An L1 pool at rest whose upper half is then split into L0 water, run `frames` more.
-Layering smallOverLarge(const char* preset, int frames) {
+Layering l0OverL1(const char* preset, int frames) {
   sph::Scene scene = poolScene(0.3, 0.3, 1500);
   EXPECT_TRUE(sph::presetByName(preset, scene.params));
   scene.boundary.box.max.y() = 0.6;
@@ -51,27 +51,27 @@ Layering smallOverLarge(const char* preset, int frames) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     v2 += p.velocity[i].squaredNorm();
     if (p.level[i] == sph::Level{0}) {
-      ++out.small_count;
-      out.small_sunk += p.position[i].y() < interface_y - margin;
+      ++out.l0_count;
+      out.l0_sunk += p.position[i].y() < interface_y - margin;
     } else {
-      ++out.large_count;
-      out.large_risen += p.position[i].y() > interface_y + margin;
+      ++out.l1_count;
+      out.l1_risen += p.position[i].y() > interface_y + margin;
     }
   }
   out.rms_speed = std::sqrt(v2 / static_cast<double>(p.size()));
   std::printf("%s, %d frames after the split: %d of %d L0 sunk, %d of %d L1 risen, rms %.4f m/s\n", preset, frames,
-              out.small_sunk, out.small_count, out.large_risen, out.large_count, out.rms_speed);
+              out.l0_sunk, out.l0_count, out.l1_risen, out.l1_count, out.rms_speed);
   return out;
 }
 
 void expectLayersStay(const char* preset) {
-  const Layering l = smallOverLarge(preset, 300);
+  const Layering l = l0OverL1(preset, 300);
   // With the thesis's averaged kernel (3.35) L0 particles sank through the L1 ones and the
   // pool turned over slowly, with both presets. With the mean support's kernel (pair_kernels.h)
   // only a few particles cross and the pool stays near rest, in either instruction set; the bounds
   // below tell the two apart.
-  EXPECT_LE(l.small_sunk, l.small_count / 50);
-  EXPECT_LE(l.large_risen, l.large_count / 50);
+  EXPECT_LE(l.l0_sunk, l.l0_count / 50);
+  EXPECT_LE(l.l1_risen, l.l1_count / 50);
   EXPECT_LT(l.rms_speed, 0.015);
 }
 
