@@ -75,7 +75,7 @@ void expectLayersStay(const char* preset) {
   EXPECT_LT(l.rms_speed, 0.015);
 }
 
-TEST(MixedClasses, SmallWaterOverLargeWaterStaysPbf) { expectLayersStay("pbf"); }
-TEST(MixedClasses, SmallWaterOverLargeWaterStaysDfsph) { expectLayersStay("dfsph"); }
+TEST(MixedClasses, FinerWaterOverCoarserWaterStaysPbf) { expectLayersStay("pbf"); }
+TEST(MixedClasses, FinerWaterOverCoarserWaterStaysDfsph) { expectLayersStay("dfsph"); }
 
 }  // namespace
