@@ -7,6 +7,7 @@ packages=(
   libzmq3-dev cppzmq-dev libprotobuf-dev protobuf-compiler
   libspdlog-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libhwy-dev  # Google Highway, for benchmarks/simd_library_benchmark.cpp only
   libmsgpack-cxx-dev
   libglfw3-dev libgl-dev libepoxy-dev libimgui-dev libpng-dev xvfb xauth libxtst-dev
   gnuplot-nox python3-zmq python3-protobuf python3-numpy

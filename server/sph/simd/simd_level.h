@@ -19,10 +19,14 @@
 // The whole library is built for baseline x86-64, so one build runs on any x86-64 CPU and takes
 // the best form the CPU has: AVX-512, else AVX2 + FMA, else scalar.
 //
-// Why hand-written lane types and not a portable library (Google Highway, xsimd): the AVX2 lane
-// type is one small header beside the AVX-512 one, the pass sources stay single, and Highway was
-// not yet measured against them here. AVX2 runs the thesis preset's step 2.4-2.9x and pbf's about
-// 2x faster than scalar (docs/performance.md, "Vector forms").
+// Why hand-written lane types and not a portable library (Google Highway, xsimd): the pass
+// families are already one source each, and the same pbf passes on a lane type over Highway 1.0
+// (Debian's) ran clearly slower than on these at the same width, mostly for want of a portable
+// load-and-transpose of the neighbours' position triples. Highway would give SSE4 and ARM64 NEON
+// forms for free (not SVE: its sizeless vectors cannot sit in the passes' lane structs); its lane
+// type and the figures are in benchmarks/simd_library and docs/performance.md ("Portable SIMD
+// library"). AVX2 runs the thesis preset's step 2.4-2.9x and pbf's about 2x faster than scalar
+// (docs/performance.md, "Vector forms").
 #pragma once
 
 #include <string>
