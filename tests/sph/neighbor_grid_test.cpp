@@ -236,6 +236,30 @@ TEST(NeighborGrid, NeighbourRelationIsSymmetric) {
 // A pair pass reads a neighbour's support only where the grid says the particle may have one of
 // the other class (hasOtherSupport): never wrong where a listed neighbour has another support, and
 // false for particles whose candidates are all of their own class, for any thread count.
+// A pair pass reads a mixed list's levels in list order (NeighborGrid::neighborLevels): each is the
+// level of the neighbour at that slot, in every vector form, through the stride's regrowth, for
+// any thread count.
+TEST(NeighborGrid, MixedListsCarryTheirNeighboursLevels) {
+  for (const sph::ParticleSet& p : {denseCloud(), scatteredCloud()}) {
+    for (int threads : {1, 2}) {
+      sph::NeighborGrid grid = cloudGrid(p.size());
+      withThreads(threads, [&] { grid.build(p); });
+      std::size_t mixed = 0;
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!grid.hasOtherSupport(i)) continue;
+        ++mixed;
+        const auto list = grid.neighbors(i);
+        const std::uint8_t* levels = grid.neighborLevels(i);
+        for (std::size_t s = 0; s < list.size(); ++s) {
+          ASSERT_EQ(levels[s], sph::levelIndex(p.level[list[s]]))
+              << "particle " << i << ", slot " << s << ", " << threads << " threads";
+        }
+      }
+      EXPECT_GT(mixed, p.size() / 4) << "both clouds mix the levels";
+    }
+  }
+}
+
 TEST(NeighborGrid, ParticlesAmongTheirOwnClassHaveNoOtherSupport) {
   const auto classes = sph::thesisPreset().levelProps();
   ASSERT_NE(classes[0].support, classes[1].support);
