@@ -66,7 +66,7 @@ TEST(VorticityConfinement, PushTurnsWithTheVortexAndScalesWithEpsilon) {
   grid.build(p);
 
   sph::VelocityConstants c;
-  c.kernels = sph::PairKernels::forClasses(classes, sph::kMaxLevels);
+  c.kernels = sph::PairKernels::forClasses(classes);
   c.dt = 0.0025f;
   c.xsph = 0.0f;  // velocity_next = velocity before the confinement: the push alone remains
   std::vector<sph::Vec3> next(p.size()), vorticity(p.size());

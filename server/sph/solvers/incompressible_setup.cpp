@@ -33,7 +33,7 @@ double latticeGradSquared(const CubicKernel& k, double spacing) {
 IncompressibleSetup makeIncompressibleSetup(const Scene& scene, WallReach contact_spacings) {
   IncompressibleSetup s;
   const auto classes = scene.params.levelProps();
-  s.kernels = PairKernels::forClasses(classes, scene.params.levels);
+  s.kernels = PairKernels::forClasses(classes);
   for (int c = 0; c < kMaxLevels; ++c) {
     const auto cu = static_cast<std::size_t>(c);
     s.spacing[cu] = static_cast<float>(std::cbrt(classes[cu].mass / scene.params.rest_density));

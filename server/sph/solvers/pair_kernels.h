@@ -15,21 +15,17 @@ namespace sph {
 
 struct PairKernels {
   std::array<CubicKernel, kMaxLevels> classes{};
-  // Each level's particle mass: every particle of a level has it (split and merge keep it so), so
-  // a pair pass takes a neighbour's mass from here, by the neighbour's support where it is of
-  // another level, instead of gathering it (pair_kernel.inc).
-  std::array<float, kMaxLevels> mass{};
-  // The run's levels (SimParams::levels): no particle is of a level at or past it.
-  std::size_t count = kMaxLevels;
 
   // Tables a pass looks up by a neighbour's level (the level each list slot holds:
   // NeighborGrid::neighborLevels), 16 entries for a register of AVX-512 lanes, the first
-  // kMaxLevels used: each level's mass and support, and for a particle of level i the kernel of
-  // the mean support (h_i + h_j) / 2 of a pair with level j, computed in floats as pair_kernel.inc's
-  // meanSupportKernel computes it in lanes, so either gives the same bits.
+  // kMaxLevels used. Every particle of a level has the level's mass and support (split and merge
+  // keep it so), so a pair pass takes a neighbour's from here instead of gathering them
+  // (pair_kernel.inc). For a particle of level i, the kernel of the mean support (h_i + h_j) / 2
+  // of a pair with level j, in floats: 2 / (h_i + h_j), then sigma and the gradient's scale by the
+  // products kernels.h defines, the bits a lane computing them would get.
   using LevelTable = std::array<float, 16>;
   static_assert(kMaxLevels <= 8, "the AVX2 lanes look up 8 entries");
-  LevelTable level_mass{};
+  LevelTable mass{};
   LevelTable level_support{};
   std::array<LevelTable, kMaxLevels> mean_inv_h{};
   std::array<LevelTable, kMaxLevels> mean_sigma{};
@@ -40,13 +36,11 @@ struct PairKernels {
 
   // Each level's kernel of its support and its mass. The supports must differ (SimParams::validate):
   // a pass tells the levels apart by them.
-  static PairKernels forClasses(const std::array<LevelProps, kMaxLevels>& levels, int count) {
+  static PairKernels forClasses(const std::array<LevelProps, kMaxLevels>& levels) {
     PairKernels k;
-    k.count = static_cast<std::size_t>(count);
     for (std::size_t c = 0; c < k.classes.size(); ++c) {
       k.classes[c] = CubicKernel::forSupport(levels[c].support);
       k.mass[c] = static_cast<float>(levels[c].mass);
-      k.level_mass[c] = k.mass[c];
       k.level_support[c] = k.classes[c].h;
     }
     for (std::size_t i = 0; i < kMaxLevels; ++i) {
