@@ -13,11 +13,11 @@
 #include <string>
 
 #include "bench/bench_run.h"
-#include "gaze/gaze_recording.h"
 #include "process/omp_wait.h"
 #include "scene/scene_loader.h"
 #include "sph/simulation.h"
 #include "sph/solvers/thesis/thesis_stages.h"
+#include "warm_run.h"
 
 namespace {
 
@@ -26,16 +26,7 @@ constexpr int kWarmSteps = 600;
 const sph::Simulation& warmState(const std::string& method) {
   static std::map<std::string, std::unique_ptr<bench::SceneRun>> runs;
   auto& run = runs[method];
-  if (!run) {
-    const sph::Scene scene = scene::loadScene("dambreak");
-    static const gaze::GazeRecording recording = gaze::readGazeRecording(scene.gaze_recording);
-    bench::RunOptions options;
-    options.frames = kWarmSteps;
-    options.threads = 2;
-    options.gaze = &recording;
-    run = std::make_unique<bench::SceneRun>(scene, method, options);
-    while (!run->done()) run->stepFrame();
-  }
+  if (!run) run = bench::warmRun("dambreak", "", method, kWarmSteps);
   return run->simulation();
 }
 

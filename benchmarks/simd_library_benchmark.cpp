@@ -18,14 +18,13 @@
 #include <vector>
 
 #include "bench/bench_run.h"
-#include "gaze/gaze_recording.h"
 #include "process/omp_wait.h"
-#include "scene/scene_loader.h"
 #include "simd_library/pbf_passes_hwy.h"
 #include "sph/simd/simd_level.h"
 #include "sph/solvers/incompressible_setup.h"
 #include "sph/solvers/local_placement.h"
 #include "sph/solvers/pbf/pbf_passes.h"
+#include "warm_run.h"
 
 namespace {
 
@@ -41,14 +40,7 @@ struct PbfState {
   std::vector<sph::Vec3> wall_grad, next;
 
   explicit PbfState(const std::string& method) {
-    const sph::Scene scene = scene::loadScene("dambreak", scene::defaultSceneDir(), "pbf");
-    static const gaze::GazeRecording recording = gaze::readGazeRecording(scene.gaze_recording);
-    bench::RunOptions options;
-    options.frames = kWarmFrames;
-    options.threads = 2;
-    options.gaze = &recording;
-    run = std::make_unique<bench::SceneRun>(scene, method, options);
-    while (!run->done()) run->stepFrame();
+    run = bench::warmRun("dambreak", "pbf", method, kWarmFrames);
     const sph::Simulation& sim = run->simulation();
     particles = sim.particles();
     setup = sph::makeIncompressibleSetup(sim.scene());
