@@ -51,7 +51,8 @@ double lineSum(const CubicKernel& k, double s, double rho) {
 
 }  // namespace
 
-void BoundaryVolume::Table::at(float x, float& v, float& dv) const {
+// Inline: every caller is in this file, and the call would cost as much as the lookup.
+inline void BoundaryVolume::Table::at(float x, float& v, float& dv) const {
   const float u = std::max(x - start, 0.0f) * inv_step;
   const auto last = static_cast<float>(value.size() - 1);
   if (u >= last) {
@@ -155,55 +156,65 @@ void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int 
   // r_a = x_a - x_b = sign_a (d_a + (l + 1/2) s) from the particle (sign: +1 for a min face).
   const auto cu = static_cast<std::size_t>(c);
   const CubicKernel& k = kernels_[cu];
+  const Table& plane = plane_[cu];
+  const Table& line = line_[cu];
   const float s = spacing_[cu];
   const int layers = static_cast<int>(std::ceil(k.h / s));
-  float d_phi[3] = {0.0f, 0.0f, 0.0f};  // d Phi / d distance_a
-  bool near[3];
-  for (int a = 0; a < 3; ++a) near[a] = distance[a] + 0.5f * s < k.h;
-  const auto offset = [&](int a, int l) { return distance[a] + (static_cast<float>(l) + 0.5f) * s; };
-  for (int a = 0; a < 3; ++a) {
-    if (!near[a]) continue;
+  // Scalars rather than arrays indexed by axis, so that they stay in registers: an array written
+  // a float at a time and read back two at a time waits on the store-to-load forwarding.
+  float phi = out.phi;
+  float d_phi0 = 0.0f, d_phi1 = 0.0f, d_phi2 = 0.0f;  // d Phi / d distance_a
+  const bool near0 = distance[0] + 0.5f * s < k.h;
+  const bool near1 = distance[1] + 0.5f * s < k.h;
+  const bool near2 = distance[2] + 0.5f * s < k.h;
+  const auto offset = [&](float d, int l) { return d + (static_cast<float>(l) + 0.5f) * s; };
+  const auto face = [&](float d, float& d_phi) {
     for (int l = 0; l < layers; ++l) {
-      const float u = offset(a, l);
       float v = 0.0f, dv = 0.0f;
-      plane_[cu].at(u, v, dv);
-      out.phi += s * v;
-      d_phi[a] += s * dv;
+      plane.at(offset(d, l), v, dv);
+      phi += s * v;
+      d_phi += s * dv;
     }
-  }
-  for (int a = 0; a < 3; ++a) {
-    for (int b = a + 1; b < 3; ++b) {
-      if (!near[a] || !near[b]) continue;
-      for (int l = 0; l < layers; ++l) {
-        for (int m = 0; m < layers; ++m) {
-          const float u = offset(a, l);
-          const float w = offset(b, m);
-          const float rho = std::sqrt(u * u + w * w);
-          if (rho >= k.h) continue;
-          float v = 0.0f, dv = 0.0f;
-          line_[cu].at(rho, v, dv);
-          out.phi -= s * s * v;
-          d_phi[a] -= s * s * dv * u / rho;
-          d_phi[b] -= s * s * dv * w / rho;
-        }
+  };
+  const auto edge = [&](float da, float db, float& d_phi_a, float& d_phi_b) {
+    for (int l = 0; l < layers; ++l) {
+      for (int m = 0; m < layers; ++m) {
+        const float u = offset(da, l);
+        const float w = offset(db, m);
+        const float rho = std::sqrt(u * u + w * w);
+        if (rho >= k.h) continue;
+        float v = 0.0f, dv = 0.0f;
+        line.at(rho, v, dv);
+        phi -= s * s * v;
+        d_phi_a -= s * s * dv * u / rho;
+        d_phi_b -= s * s * dv * w / rho;
       }
     }
-  }
-  if (near[0] && near[1] && near[2]) {
+  };
+  if (near0) face(distance[0], d_phi0);
+  if (near1) face(distance[1], d_phi1);
+  if (near2) face(distance[2], d_phi2);
+  if (near0 && near1) edge(distance[0], distance[1], d_phi0, d_phi1);
+  if (near0 && near2) edge(distance[0], distance[2], d_phi0, d_phi2);
+  if (near1 && near2) edge(distance[1], distance[2], d_phi1, d_phi2);
+  if (near0 && near1 && near2) {
     for (int l = 0; l < layers; ++l) {
       for (int m = 0; m < layers; ++m) {
         for (int o = 0; o < layers; ++o) {
-          const float u[3] = {offset(0, l), offset(1, m), offset(2, o)};
-          const float r = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+          const float u0 = offset(distance[0], l), u1 = offset(distance[1], m), u2 = offset(distance[2], o);
+          const float r = std::sqrt(u0 * u0 + u1 * u1 + u2 * u2);
           if (r >= k.h) continue;
-          out.phi += s * s * s * cubicW(k, r);
+          phi += s * s * s * cubicW(k, r);
           const float g = cubicGradFactor(k, r);  // dW/dr / r
-          for (int a = 0; a < 3; ++a) d_phi[a] += s * s * s * g * u[a];
+          d_phi0 += s * s * s * g * u0;
+          d_phi1 += s * s * s * g * u1;
+          d_phi2 += s * s * s * g * u2;
         }
       }
     }
   }
-  for (int a = 0; a < 3; ++a) out.grad[a] = d_phi[a] * sign[a];
+  out.phi = phi;
+  out.grad = Vec3(d_phi0 * sign[0], d_phi1 * sign[1], d_phi2 * sign[2]);
 }
 
 BoundarySample BoundaryVolume::sample(const Vec3& x, int c, const BoxState& box) const {
