@@ -63,6 +63,10 @@ Summary summarize(const RunResult& run) {
       s.mean_fovea_width_arcmin += r.fovea_width_arcmin;
       s.mean_fovea_mar_arcmin += r.fovea_mar_arcmin;
     }
+    s.mean_held_by_eye += r.held_by_eye / n;
+    s.mean_held_by_grading += r.held_by_grading / n;
+    s.mean_held_by_thin += r.held_by_thin / n;
+    s.mean_held_waiting += r.held_waiting / n;
     s.mean_neighbors += r.mean_neighbors / n;
     s.mean_density_ratio += r.mean_density_ratio / n;
     s.max_density_ratio = std::max(s.max_density_ratio, r.max_density_ratio);
@@ -105,6 +109,10 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["gaze_finest_share"] = s.gaze_finest_share;
   j["mean_fovea_width_arcmin"] = s.mean_fovea_width_arcmin;
   j["mean_fovea_mar_arcmin"] = s.mean_fovea_mar_arcmin;
+  j["mean_held_finer"] = {{"eye", s.mean_held_by_eye},
+                          {"grading", s.mean_held_by_grading},
+                          {"thin", s.mean_held_by_thin},
+                          {"waiting", s.mean_held_waiting}};
   j["mean_neighbors_per_particle"] = s.mean_neighbors;
   j["neighbor_list_stride"] = run.neighbor_stride;
   j["mean_density_over_rho0"] = s.mean_density_ratio;
@@ -144,19 +152,20 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
          "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
          "divergence_iterations,placement_iterations,visible,over_budget,fovea_level,fovea_width_arcmin,"
-         "fovea_mar_arcmin,split_passes\n";
-  char line[640];
+         "fovea_mar_arcmin,split_passes,held_by_eye,held_by_grading,held_by_thin,held_waiting\n";
+  char line[720];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
     std::snprintf(line, sizeof line,
                   "%d,%.4f,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%d,%d,"
-                  "%d,%.3f,%.3f,%d\n",
+                  "%d,%.3f,%.3f,%d,%d,%d,%d,%d\n",
                   r.frame, r.sim_time, r.particles(), levelCounts(r).c_str(), r.ms.neighbor_ms,
                   r.ms.density_pressure_ms, r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms,
                   steps_per_s, r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
                   sph::gazeModeName(r.gaze_mode), r.merge_unpaired, r.rms_speed, r.volume, r.substeps,
                   r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.visible, r.over_budget,
-                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin, r.split_passes);
+                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin, r.split_passes, r.held_by_eye,
+                  r.held_by_grading, r.held_by_thin, r.held_waiting);
     out << line;
   }
 }
@@ -200,6 +209,11 @@ static std::string levelText(const Summary& s) {
   if (s.budget_measured) {
     std::snprintf(buf, sizeof buf, " (over budget mean %.2f %%, at most %.2f %%)", 100.0 * s.mean_over_budget_share,
                   100.0 * s.max_over_budget_share);
+    text += buf;
+  }
+  if (s.mean_held_by_eye + s.mean_held_by_grading + s.mean_held_by_thin + s.mean_held_waiting > 0.0) {
+    std::snprintf(buf, sizeof buf, " | kept finer by: the eye %.0f, grading %.0f, thin water %.0f, waiting %.0f",
+                  s.mean_held_by_eye, s.mean_held_by_grading, s.mean_held_by_thin, s.mean_held_waiting);
     text += buf;
   }
   if (s.gaze_on_water_frames > 0) {

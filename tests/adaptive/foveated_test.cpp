@@ -301,6 +301,33 @@ TEST(Foveated, TheEyeMeasuredOnRequestMatchesEveryStep) {
 
 // After a saccade across the water, every seen particle near the new gaze point is as fine as
 // the eye resolves there (the finest level at the gaze point itself) within three frames.
+// The decision accounts for every particle finer than the coarsest level: a rule keeps it (the
+// eye, grading, thin water, a wait) or it asks to merge. On a surge under a still gaze the eye
+// keeps the fovea fine and grading keeps rings around it.
+TEST(Foveated, EveryFinerParticleIsKeptByARuleOrAsksToMerge) {
+  const sph::Scene scene = surgeScene("pbf");
+  Rig rig = foveatedRig(scene);
+  const int coarsest = scene.params.levels - 1;
+  int by_eye = 0, by_grading = 0, finer_seen = 0;
+  for (int s = 0; s < 60; ++s) {
+    rig.controller->setGaze(gazeAt(0.45, 0.55));
+    const sph::ParticleSet& p = rig.sim->particles();
+    int finer = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) finer += sph::levelIndex(p.level[i]) < coarsest;
+    rig.sim->step();
+    const sph::AdaptiveStats& st = rig.controller->lastStats();
+    ASSERT_EQ(st.held_by_eye + st.held_by_grading + st.held_by_thin + st.held_waiting + st.merge_wanted, finer)
+        << "frame " << s;
+    by_eye += st.held_by_eye;
+    by_grading += st.held_by_grading;
+    finer_seen += finer;
+  }
+  std::printf("finer than the coarsest over 60 frames: %d, kept by the eye %d, by grading %d\n", finer_seen, by_eye,
+              by_grading);
+  EXPECT_GT(by_eye, 0);
+  EXPECT_GT(by_grading, 0);
+}
+
 TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
   sph::Scene scene = surgeScene("pbf");
   Rig rig = foveatedRig(scene);

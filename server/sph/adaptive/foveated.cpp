@@ -63,7 +63,9 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const float last_fovea = scratch.fovea_depth;
   float fovea = std::numeric_limits<float>::infinity();  // the threads' nearest, combined
   int split_wanted = 0, merge_wanted = 0, still_coarse = 0;
-#pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse)
+  int held_by_eye = 0, held_by_grading = 0, held_by_thin = 0, held_waiting = 0;
+#pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse, held_by_eye, held_by_grading, \
+                                   held_by_thin, held_waiting)
   {
     float nearest = std::numeric_limits<float>::infinity();
     const ThreadShare share = threadShare(n);
@@ -126,7 +128,9 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         const Eigen::Vector3f r = p.position[j] - p.position[i];
         moment.noalias() += r * r.transpose();
       }
+      const int merge_by_eye = bounds.merge_upto;
       gradedRule(bounds, finest_neighbour, finest_two_hops);
+      const int merge_by_grading = bounds.merge_upto;
       // How full the particle's support is: its density, which every level estimates alike. A
       // flat free surface fills about half of it; a sheet thinner than the support, a jet or a
       // drop less.
@@ -148,6 +152,15 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         decision = kMerge;
       }
       out[i] = decision;
+      if (!splits_only && level < coarsest) {
+        const bool by_eye = merge_by_eye <= level;
+        const bool by_grading = !by_eye && merge_by_grading <= level;
+        const bool by_thin = !by_eye && !by_grading && bounds.merge_upto <= level;
+        held_by_eye += by_eye;
+        held_by_grading += by_grading;
+        held_by_thin += by_thin;
+        held_waiting += !by_eye && !by_grading && !by_thin && decision != kMerge;
+      }
       // Seen water still coarser than the eye allows once this split is made (the frame after
       // this step shows level - 1).
       if (seen && p.surface_distance[i] < hidden_depth) still_coarse += level - (decision == kSplit) > eye_level;
@@ -157,6 +170,12 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   }
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
   view.still_coarse = still_coarse;
+  if (!splits_only) {
+    view.held_by_eye = held_by_eye;
+    view.held_by_grading = held_by_grading;
+    view.held_by_thin = held_by_thin;
+    view.held_waiting = held_waiting;
+  }
   view.fovea_depth = scratch.fovea_depth;
   return {split_wanted, merge_wanted};
 }
