@@ -42,7 +42,7 @@ TEST(FoveatedRules, GradedKeepsOneLevelAboveTheFinestNeighbour) {
   EXPECT_EQ(b.target, 1);
   EXPECT_EQ(b.merge_upto, 1);
   sph::LevelBounds far{kCoarsest, kCoarsest, kCoarsest};
-  sph::gradedRule(far, 2, 1);  // L2 beside it, L1 two hops away
+  sph::gradedRule(far, 2, 1);  // L2 beside it, L1 within a merged particle's reach
   EXPECT_EQ(far.target, 3);
   EXPECT_EQ(far.merge_upto, 2);
 }

@@ -16,7 +16,7 @@
 //            thinner than the particle is wide) stays at most at the thin level.
 //   graded   no particle is more than one level coarser than its finest neighbour: every pair
 //            the solvers see is of one level or two neighbouring ones (mass ratio 2, as the
-//            thesis's L0-L1 pairs).
+//            thesis's L0-L1 pairs); a merge needs no finer level within the merged particle's reach.
 //
 // Every particle writes only its own decision and target: the result does not depend on the
 // thread count.
@@ -44,7 +44,7 @@ struct FoveatedView {
   // Particles finer than the coarsest level, by what keeps each from merging (the first rule in
   // this order that does), counted by a step's first decision; the others' decision is MERGE.
   int held_by_eye = 0;      // acuity, or not hidden deep enough under the surface
-  int held_by_grading = 0;  // a finer level within two hops
+  int held_by_grading = 0;  // a finer level within a merged particle's reach
   int held_by_thin = 0;     // thin or shallow water
   int held_waiting = 0;     // placed this frame or earlier, or within the merge hold
 };

@@ -35,10 +35,12 @@ inline void hiddenRule(LevelBounds& b, float depth_below_surface, float hidden_d
 }
 
 // graded: at most one level coarser than the finest neighbour; a merged particle reaches farther
-// than either of its pair, so it must find no level finer than one below its own within two hops.
-inline void gradedRule(LevelBounds& b, int finest_neighbour, int finest_within_two_hops) {
+// than either of its pair, so no level finer than one below its own may lie within its reach
+// (`finest_in_merged_reach`: the finest level there, which the decision measures), or the merged
+// particle would split again.
+inline void gradedRule(LevelBounds& b, int finest_neighbour, int finest_in_merged_reach) {
   b.target = std::min(b.target, finest_neighbour + 1);
-  b.merge_upto = std::min(b.merge_upto, finest_within_two_hops + 1);
+  b.merge_upto = std::min(b.merge_upto, finest_in_merged_reach + 1);
 }
 
 // thin: a support filled below `thin_fill` of rho0 (a sheet, a jet, a drop) keeps the particle at
