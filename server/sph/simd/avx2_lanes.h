@@ -42,6 +42,28 @@ inline __m256i gatherInt(__m256 live, __m256i idx, const std::int32_t* base) {
                                      _mm256_castps_si256(live), 4);
 }
 
+// Lanes a < b, as unsigned 32-bit integers (ids, indices): AVX2 compares signed only, so both
+// sides are offset by 2^31 first.
+inline __m256 lessUnsigned(__m256i a, __m256i b) {
+  const __m256i sign = _mm256_set1_epi32(INT32_MIN);
+  return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_xor_si256(b, sign), _mm256_xor_si256(a, sign)));
+}
+
+// The least of the 8 lanes, as unsigned 32-bit integers.
+inline std::uint32_t minOfUnsigned(__m256i v) {
+  __m128i s = _mm_min_epu32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+  s = _mm_min_epu32(s, _mm_shuffle_epi32(s, _MM_SHUFFLE(1, 0, 3, 2)));
+  s = _mm_min_epu32(s, _mm_shuffle_epi32(s, _MM_SHUFFLE(2, 3, 0, 1)));
+  return static_cast<std::uint32_t>(_mm_cvtsi128_si32(s));
+}
+
+// Lane l of v.
+inline std::int32_t laneOf(__m256i v, int l) {
+  alignas(32) std::int32_t lanes[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
+  return lanes[l];
+}
+
 // Positions and velocities are packed x, y, z triples: the gather index of particle j is 3 j.
 inline __m256i tripleIndex(__m256i idx) { return _mm256_add_epi32(idx, _mm256_add_epi32(idx, idx)); }
 

@@ -1,4 +1,5 @@
-// 8 lanes of AVX2 + FMA for the pair-pass templates (pair_lanes_scalar.h lists the interface).
+// 8 lanes of AVX2 + FMA for the passes written once against a lane type: the pair passes, the
+// partner search, the neighbour scan (pair_lanes_scalar.h lists the interface).
 // A lane mask is a vector with all bits of its live lanes set, as AVX2's compares, blends and
 // masked loads take it. For the AVX2 forms only; built for AVX2 like them.
 #pragma once
@@ -51,6 +52,20 @@ struct Avx2Lanes {
   static F sqrt(F a) { return _mm256_sqrt_ps(a); }
   static float sum(F v) { return lanes2::sum(v); }
   static float minOf(F v) { return lanes2::minOf(v); }
+
+  // Index lanes as 32-bit integers, for the partner search and the neighbour scan.
+  static I setIndex(std::int32_t x) { return _mm256_set1_epi32(x); }
+  static I gatherIndex(M m, I j, const std::int32_t* base) { return lanes2::gatherInt(m, j, base); }
+  static I tripleIndex(I j) { return lanes2::tripleIndex(j); }
+  static M eqIndex(I a, I b) { return _mm256_castsi256_ps(_mm256_cmpeq_epi32(a, b)); }
+  static M ltIndex(I a, I b) { return lanes2::lessUnsigned(a, b); }
+  static I selectIndex(M m, I a, I b) {
+    return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(b), _mm256_castsi256_ps(a), m));
+  }
+  static std::uint32_t minOfIndex(I v) { return lanes2::minOfUnsigned(v); }
+  static std::int32_t laneOf(I v, int l) { return lanes2::laneOf(v, l); }
+  static M orMask(M a, M b) { return _mm256_or_ps(a, b); }
+  static std::uint32_t bits(M m) { return lanes2::bitsOf(m); }
 };
 
 }  // namespace sph

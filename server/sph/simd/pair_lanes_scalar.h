@@ -16,6 +16,17 @@
 //   le, lt, eq, neq        comparisons -> M; any(m); andMask(a, b)
 //   select(m, a, b)        a where m, else b; maskz(m, a): a where m, else 0
 //   max, min, sqrt; sum(v), minOf(v): over the lanes
+//
+// The vector types add index-lane operations for the partner search and the neighbour scan, whose
+// scalar forms are their own sources (partner_search.cpp, neighbor_scan.cpp):
+//
+//   setIndex(x)              x in every index lane
+//   gatherIndex(m, j, base)  base[j_l] as 32-bit integers (0 on dead lanes)
+//   tripleIndex(j)           3 j, the gather index of a packed x, y, z triple
+//   eqIndex, ltIndex         comparisons -> M (ltIndex unsigned, as ids and indices are)
+//   selectIndex(m, a, b)     a where m, else b
+//   minOfIndex(v)            the least lane, unsigned; laneOf(v, l): lane l
+//   orMask(a, b); bits(m)    the union of masks; a mask as bits (bit l: lane l)
 #pragma once
 
 #include <algorithm>
