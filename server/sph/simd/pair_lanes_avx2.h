@@ -66,6 +66,15 @@ struct Avx2Lanes {
   static std::int32_t laneOf(I v, int l) { return lanes2::laneOf(v, l); }
   static M orMask(M a, M b) { return _mm256_or_ps(a, b); }
   static std::uint32_t bits(M m) { return lanes2::bitsOf(m); }
+  static M le(M m, F a, F b) { return _mm256_and_ps(m, le(a, b)); }
+  static M neqIndex(M m, I a, I b) { return _mm256_andnot_ps(eqIndex(a, b), m); }
+  static F fmadd(F a, F b, F c) { return _mm256_fmadd_ps(a, b, c); }
+  static I compress(M m, I v) { return lanes2::compress(lanes2::bitsOf(m), v); }
+  static void storeIndex(std::uint32_t* p, I v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v); }
+  static I loadIndex(const std::uint32_t* p) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)); }
+  static I gatherIndex(I j, const std::int32_t* base) { return _mm256_i32gather_epi32(base, j, 4); }
+  static void storeBytes(std::uint8_t* p, I v) { lanes2::storeBytes(p, v); }
+  static constexpr bool kMaskedByteStore = false;
 };
 
 }  // namespace sph

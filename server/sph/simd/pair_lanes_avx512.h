@@ -57,6 +57,13 @@ struct Avx512Lanes {
   static std::int32_t laneOf(I v, int l) { return lanes::laneOf(v, l); }
   static M orMask(M a, M b) { return static_cast<M>(a | b); }
   static std::uint32_t bits(M m) { return m; }
+  static M le(M m, F a, F b) { return _mm512_mask_cmp_ps_mask(m, a, b, _CMP_LE_OQ); }
+  static M neqIndex(M m, I a, I b) { return static_cast<M>(m & _mm512_cmpneq_epi32_mask(a, b)); }
+  static F fmadd(F a, F b, F c) { return _mm512_fmadd_ps(a, b, c); }
+  static I compress(M m, I v) { return _mm512_maskz_compress_epi32(m, v); }
+  static void storeIndex(std::uint32_t* p, I v) { _mm512_storeu_si512(p, v); }
+  static void storeBytes(std::uint8_t* p, M m, I v) { _mm_mask_storeu_epi8(p, m, _mm512_cvtepi32_epi8(v)); }
+  static constexpr bool kMaskedByteStore = true;
 };
 
 }  // namespace sph

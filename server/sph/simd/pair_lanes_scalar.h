@@ -27,6 +27,13 @@
 //   selectIndex(m, a, b)     a where m, else b
 //   minOfIndex(v)            the least lane, unsigned; laneOf(v, l): lane l
 //   orMask(a, b); bits(m)    the union of masks; a mask as bits (bit l: lane l)
+//   le(m, a, b), neqIndex(m, a, b)  the comparisons on the lanes of m only
+//   fmadd(a, b, c)           a b + c, rounded once
+//   compress(m, v)           the lanes of v in m, packed to the front in order
+//   storeIndex(p, v)         all lanes of v to p[0 .. width)
+//   kMaskedByteStore         whether the lanes store bytes under a mask; where they do (AVX-512):
+//     storeBytes(p, m, v)    v_l (below 256) as the bytes p[l] on the live lanes; where not (AVX2):
+//     loadIndex(p), gatherIndex(j, base), storeBytes(p, v)  the same on all lanes, no mask
 #pragma once
 
 #include <algorithm>
