@@ -75,6 +75,18 @@ struct Avx2Lanes {
   static I gatherIndex(I j, const std::int32_t* base) { return _mm256_i32gather_epi32(base, j, 4); }
   static void storeBytes(std::uint8_t* p, I v) { lanes2::storeBytes(p, v); }
   static constexpr bool kMaskedByteStore = false;
+
+  // For the thesis stages. The "on m" forms leave the other lanes of their first addend as they
+  // are: AVX2 has no masked arithmetic, so they zero the other lanes' product or addend instead,
+  // which adds +0 there.
+  static M none() { return _mm256_setzero_ps(); }
+  static M gt(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_GT_OQ); }
+  static M eq(M m, F a, F b) { return _mm256_and_ps(m, eq(a, b)); }
+  static M neq(M m, F a, F b) { return _mm256_and_ps(m, neq(a, b)); }
+  static M andNotMask(M a, M b) { return _mm256_andnot_ps(a, b); }
+  static F rsqrt(F a) { return _mm256_rsqrt_ps(a); }  // 12 bits
+  static F fmaddOn(M m, F a, F b, F c) { return _mm256_fmadd_ps(_mm256_and_ps(m, a), b, c); }
+  static F addOn(M m, F a, F b) { return a + _mm256_and_ps(m, b); }
 };
 
 }  // namespace sph

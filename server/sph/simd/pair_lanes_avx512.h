@@ -64,6 +64,16 @@ struct Avx512Lanes {
   static void storeIndex(std::uint32_t* p, I v) { _mm512_storeu_si512(p, v); }
   static void storeBytes(std::uint8_t* p, M m, I v) { _mm_mask_storeu_epi8(p, m, _mm512_cvtepi32_epi8(v)); }
   static constexpr bool kMaskedByteStore = true;
+
+  // For the thesis stages.
+  static M none() { return 0; }
+  static M gt(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
+  static M eq(M m, F a, F b) { return _mm512_mask_cmp_ps_mask(m, a, b, _CMP_EQ_OQ); }
+  static M neq(M m, F a, F b) { return _mm512_mask_cmp_ps_mask(m, a, b, _CMP_NEQ_OQ); }
+  static M andNotMask(M a, M b) { return static_cast<M>(b & ~a); }
+  static F rsqrt(F a) { return _mm512_rsqrt14_ps(a); }  // 14 bits
+  static F fmaddOn(M m, F a, F b, F c) { return _mm512_mask3_fmadd_ps(a, b, c, m); }
+  static F addOn(M m, F a, F b) { return _mm512_mask_add_ps(a, m, a, b); }
 };
 
 }  // namespace sph

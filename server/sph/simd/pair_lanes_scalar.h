@@ -34,6 +34,14 @@
 //   kMaskedByteStore         whether the lanes store bytes under a mask; where they do (AVX-512):
 //     storeBytes(p, m, v)    v_l (below 256) as the bytes p[l] on the live lanes; where not (AVX2):
 //     loadIndex(p), gatherIndex(j, base), storeBytes(p, v)  the same on all lanes, no mask
+//
+// and, for the thesis stages:
+//
+//   none()                   no lanes; gt(a, b); eq(m, a, b), neq(m, a, b) on the lanes of m
+//   andNotMask(a, b)         the lanes of b not in a
+//   rsqrt(a)                 the estimate of 1 / sqrt(a) (AVX2 12 bits, AVX-512 14)
+//   fmaddOn(m, a, b, c)      a b + c on the lanes of m, c elsewhere
+//   addOn(m, a, b)           a + b on the lanes of m, a elsewhere
 #pragma once
 
 #include <algorithm>
