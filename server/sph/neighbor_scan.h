@@ -1,6 +1,6 @@
 // The list pass of the neighbour search (neighbor_grid.h): for a block of particles, the
 // candidates of each cell's particles tested against them, eq. (3.34), and the accepted ones
-// written to their lists. Scalar and AVX-512 forms (simd_level.h), chosen by NeighborGrid::build.
+// written to their lists. Scalar, AVX2 and AVX-512 forms (simd_level.h), chosen by NeighborGrid::build.
 #pragma once
 
 #include <cstddef>

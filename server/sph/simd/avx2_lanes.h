@@ -4,6 +4,7 @@
 // registers. For the AVX2 forms only (the *_avx2.cpp files); built for AVX2 like them.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -40,6 +41,57 @@ inline __m256 gather(__m256 live, __m256i idx, const float* base) {
 inline __m256i gatherInt(__m256 live, __m256i idx, const std::int32_t* base) {
   return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), idx,
                                      _mm256_castps_si256(live), 4);
+}
+
+// Lanes a < b, as unsigned 32-bit integers (ids, indices): AVX2 compares signed only, so both
+// sides are offset by 2^31 first.
+inline __m256 lessUnsigned(__m256i a, __m256i b) {
+  const __m256i sign = _mm256_set1_epi32(INT32_MIN);
+  return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_xor_si256(b, sign), _mm256_xor_si256(a, sign)));
+}
+
+// The least of the 8 lanes, as unsigned 32-bit integers.
+inline std::uint32_t minOfUnsigned(__m256i v) {
+  __m128i s = _mm_min_epu32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+  s = _mm_min_epu32(s, _mm_shuffle_epi32(s, _MM_SHUFFLE(1, 0, 3, 2)));
+  s = _mm_min_epu32(s, _mm_shuffle_epi32(s, _MM_SHUFFLE(2, 3, 0, 1)));
+  return static_cast<std::uint32_t>(_mm_cvtsi128_si32(s));
+}
+
+// Lane l of v.
+inline std::int32_t laneOf(__m256i v, int l) {
+  alignas(32) std::int32_t lanes[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
+  return lanes[l];
+}
+
+// For each 8-lane mask, the lanes it sets in order, one byte each (the rest 0): the permutation
+// that packs those lanes to the front. A table, not BMI2's pext, which is slow on AMD CPUs before
+// Zen 3, the very ones the AVX2 form is for.
+inline constexpr std::array<std::uint64_t, 256> kCompress = [] {
+  std::array<std::uint64_t, 256> table{};
+  for (std::uint32_t m = 0; m < 256; ++m) {
+    std::uint64_t packed = 0;
+    int at = 0;
+    for (std::uint64_t l = 0; l < 8; ++l) {
+      if ((m >> l) & 1u) packed |= l << (8 * at++);
+    }
+    table[m] = packed;
+  }
+  return table;
+}();
+
+// The lanes of v whose bits are set in `bits`, packed to the front in order (AVX2 has no
+// compress); the lanes after them are v's lane 0.
+inline __m256i compress(std::uint32_t bits, __m256i v) {
+  const __m256i order = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kCompress[bits])));
+  return _mm256_permutevar8x32_epi32(v, order);
+}
+
+// v[l] (each below 256) as the bytes p[0 .. 8).
+inline void storeBytes(std::uint8_t* p, __m256i v) {
+  const __m128i words = _mm_packus_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+  _mm_storel_epi64(reinterpret_cast<__m128i*>(p), _mm_packus_epi16(words, words));
 }
 
 // Positions and velocities are packed x, y, z triples: the gather index of particle j is 3 j.

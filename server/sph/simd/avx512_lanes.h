@@ -20,6 +20,18 @@ inline __m512 gather(__mmask16 live, __m512i idx, const float* base) {
   return _mm512_mask_i32gather_ps(_mm512_setzero_ps(), live, idx, base, 4);
 }
 
+// The same for 32-bit integers.
+inline __m512i gatherInt(__mmask16 live, __m512i idx, const std::int32_t* base) {
+  return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), live, idx, base, 4);
+}
+
+// Lane l of v.
+inline std::int32_t laneOf(__m512i v, int l) {
+  alignas(64) std::int32_t lanes[16];
+  _mm512_store_si512(lanes, v);
+  return lanes[l];
+}
+
 // Positions and velocities are packed x, y, z triples: the gather index of particle j is 3 j.
 inline __m512i tripleIndex(__m512i idx) { return _mm512_add_epi32(idx, _mm512_add_epi32(idx, idx)); }
 

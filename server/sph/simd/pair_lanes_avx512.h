@@ -1,4 +1,5 @@
-// 16 lanes of AVX-512 for the pair-pass templates (pair_lanes_scalar.h lists the interface).
+// 16 lanes of AVX-512 for the passes written once against a lane type: the pair passes, the
+// partner search, the neighbour scan (pair_lanes_scalar.h lists the interface).
 // For the AVX-512 forms only; built for AVX-512 like them.
 #pragma once
 
@@ -44,6 +45,35 @@ struct Avx512Lanes {
   static F sqrt(F a) { return _mm512_sqrt_ps(a); }
   static float sum(F v) { return _mm512_reduce_add_ps(v); }
   static float minOf(F v) { return _mm512_reduce_min_ps(v); }
+
+  // Index lanes as 32-bit integers, for the partner search and the neighbour scan.
+  static I setIndex(std::int32_t x) { return _mm512_set1_epi32(x); }
+  static I gatherIndex(M m, I j, const std::int32_t* base) { return lanes::gatherInt(m, j, base); }
+  static I tripleIndex(I j) { return lanes::tripleIndex(j); }
+  static M eqIndex(I a, I b) { return _mm512_cmpeq_epi32_mask(a, b); }
+  static M ltIndex(I a, I b) { return _mm512_cmplt_epu32_mask(a, b); }
+  static I selectIndex(M m, I a, I b) { return _mm512_mask_blend_epi32(m, b, a); }
+  static std::uint32_t minOfIndex(I v) { return _mm512_reduce_min_epu32(v); }
+  static std::int32_t laneOf(I v, int l) { return lanes::laneOf(v, l); }
+  static M orMask(M a, M b) { return static_cast<M>(a | b); }
+  static std::uint32_t bits(M m) { return m; }
+  static M le(M m, F a, F b) { return _mm512_mask_cmp_ps_mask(m, a, b, _CMP_LE_OQ); }
+  static M neqIndex(M m, I a, I b) { return static_cast<M>(m & _mm512_cmpneq_epi32_mask(a, b)); }
+  static F fmadd(F a, F b, F c) { return _mm512_fmadd_ps(a, b, c); }
+  static I compress(M m, I v) { return _mm512_maskz_compress_epi32(m, v); }
+  static void storeIndex(std::uint32_t* p, I v) { _mm512_storeu_si512(p, v); }
+  static void storeBytes(std::uint8_t* p, M m, I v) { _mm_mask_storeu_epi8(p, m, _mm512_cvtepi32_epi8(v)); }
+  static constexpr bool kMaskedByteStore = true;
+
+  // For the thesis stages.
+  static M none() { return 0; }
+  static M gt(F a, F b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
+  static M eq(M m, F a, F b) { return _mm512_mask_cmp_ps_mask(m, a, b, _CMP_EQ_OQ); }
+  static M neq(M m, F a, F b) { return _mm512_mask_cmp_ps_mask(m, a, b, _CMP_NEQ_OQ); }
+  static M andNotMask(M a, M b) { return static_cast<M>(b & ~a); }
+  static F rsqrt(F a) { return _mm512_rsqrt14_ps(a); }  // 14 bits
+  static F fmaddOn(M m, F a, F b, F c) { return _mm512_mask3_fmadd_ps(a, b, c, m); }
+  static F addOn(M m, F a, F b) { return _mm512_mask_add_ps(a, m, a, b); }
 };
 
 }  // namespace sph

@@ -16,6 +16,32 @@
 //   le, lt, eq, neq        comparisons -> M; any(m); andMask(a, b)
 //   select(m, a, b)        a where m, else b; maskz(m, a): a where m, else 0
 //   max, min, sqrt; sum(v), minOf(v): over the lanes
+//
+// The vector types add index-lane operations for the partner search and the neighbour scan, whose
+// scalar forms are their own sources (partner_search.cpp, neighbor_scan.cpp):
+//
+//   setIndex(x)              x in every index lane
+//   gatherIndex(m, j, base)  base[j_l] as 32-bit integers (0 on dead lanes)
+//   tripleIndex(j)           3 j, the gather index of a packed x, y, z triple
+//   eqIndex, ltIndex         comparisons -> M (ltIndex unsigned, as ids and indices are)
+//   selectIndex(m, a, b)     a where m, else b
+//   minOfIndex(v)            the least lane, unsigned; laneOf(v, l): lane l
+//   orMask(a, b); bits(m)    the union of masks; a mask as bits (bit l: lane l)
+//   le(m, a, b), neqIndex(m, a, b)  the comparisons on the lanes of m only
+//   fmadd(a, b, c)           a b + c, rounded once
+//   compress(m, v)           the lanes of v in m, packed to the front in order
+//   storeIndex(p, v)         all lanes of v to p[0 .. width)
+//   kMaskedByteStore         whether the lanes store bytes under a mask; where they do (AVX-512):
+//     storeBytes(p, m, v)    v_l (below 256) as the bytes p[l] on the live lanes; where not (AVX2):
+//     loadIndex(p), gatherIndex(j, base), storeBytes(p, v)  the same on all lanes, no mask
+//
+// and, for the thesis stages:
+//
+//   none()                   no lanes; gt(a, b); eq(m, a, b), neq(m, a, b) on the lanes of m
+//   andNotMask(a, b)         the lanes of b not in a
+//   rsqrt(a)                 the estimate of 1 / sqrt(a) (AVX2 12 bits, AVX-512 14)
+//   fmaddOn(m, a, b, c)      a b + c on the lanes of m, c elsewhere
+//   addOn(m, a, b)           a + b on the lanes of m, a elsewhere
 #pragma once
 
 #include <algorithm>

@@ -12,10 +12,11 @@
 //                  SPH_AVX2_END, avx2_target.h)
 //   foo_avx512.cpp the AVX-512 form (namespace sph::avx512, between SPH_AVX512_BEGIN and
 //                  SPH_AVX512_END, avx512_target.h)
-// The thesis's two pair stages (solvers/thesis/thesis_stages_avx2.cpp, _avx512.cpp), the
-// neighbour scan and the merge-partner search keep hand-written intrinsics: the stages' batches
-// run on from one particle's list into the next's, which a per-particle pass on lanes does not
-// express, and the scan compresses accepted lanes, which a lane type does not offer.
+// The thesis's two pair stages (solvers/thesis/thesis_stages.inc), the neighbour scan
+// (neighbor_scan.inc) and the merge-partner search (adaptive/partner_search.inc) are written once
+// for the two vector forms only, and their scalar forms are sources of their own: the stages'
+// batches run on from one particle's list into the next's, the scan compresses accepted lanes and
+// the search reduces its lanes' bests at the end, none of which the one-lane loops need.
 // The whole library is built for baseline x86-64, so one build runs on any x86-64 CPU and takes
 // the best form the CPU has: AVX-512, else AVX2 + FMA, else scalar.
 //

@@ -1,5 +1,5 @@
 // The per-particle ends of the two pair-sum stages, shared by the scalar loops (thesis_stages.cpp)
-// and the AVX-512 loops (thesis_stages_avx512.cpp): what a particle does with its sums.
+// and the AVX2 and AVX-512 loops (thesis_stages.inc): what a particle does with its sums.
 #pragma once
 
 #include <cstddef>
