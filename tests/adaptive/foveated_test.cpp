@@ -1,7 +1,8 @@
 // The foveated method (adaptive/foveated.h): more than two levels, sized by the eye's acuity, on
 // the incompressible solvers: mass exact by level through many level changes, the same result for
-// any thread count, levels that hold still under a still gaze, and a new fovea at its levels
-// within three frames of a saccade.
+// any thread count, levels that hold still under a still gaze, a rule or a merge request for
+// every particle finer than the coarsest level, and a new fovea at its levels within three frames
+// of a saccade.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -299,8 +300,6 @@ TEST(Foveated, TheEyeMeasuredOnRequestMatchesEveryStep) {
   }
 }
 
-// After a saccade across the water, every seen particle near the new gaze point is as fine as
-// the eye resolves there (the finest level at the gaze point itself) within three frames.
 // The decision accounts for every particle finer than the coarsest level: a rule keeps it (the
 // eye, grading, thin water, a wait) or it asks to merge. On a surge under a still gaze the eye
 // keeps the fovea fine and grading keeps rings around it.
@@ -328,6 +327,8 @@ TEST(Foveated, EveryFinerParticleIsKeptByARuleOrAsksToMerge) {
   EXPECT_GT(by_grading, 0);
 }
 
+// After a saccade across the water, every seen particle near the new gaze point is as fine as
+// the eye resolves there (the finest level at the gaze point itself) within three frames.
 TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {
   sph::Scene scene = surgeScene("pbf");
   Rig rig = foveatedRig(scene);
