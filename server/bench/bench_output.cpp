@@ -63,10 +63,10 @@ Summary summarize(const RunResult& run) {
       s.mean_fovea_width_arcmin += r.fovea_width_arcmin;
       s.mean_fovea_mar_arcmin += r.fovea_mar_arcmin;
     }
-    s.mean_held_by_eye += r.held_by_eye / n;
-    s.mean_held_by_grading += r.held_by_grading / n;
-    s.mean_held_by_thin += r.held_by_thin / n;
-    s.mean_held_waiting += r.held_waiting / n;
+    s.mean_held_by_eye += r.held.eye / n;
+    s.mean_held_by_grading += r.held.grading / n;
+    s.mean_held_by_thin += r.held.thin / n;
+    s.mean_held_waiting += r.held.waiting / n;
     s.mean_neighbors += r.mean_neighbors / n;
     s.mean_density_ratio += r.mean_density_ratio / n;
     s.max_density_ratio = std::max(s.max_density_ratio, r.max_density_ratio);
@@ -164,8 +164,8 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
                   steps_per_s, r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
                   sph::gazeModeName(r.gaze_mode), r.merge_unpaired, r.rms_speed, r.volume, r.substeps,
                   r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.visible, r.over_budget,
-                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin, r.split_passes, r.held_by_eye,
-                  r.held_by_grading, r.held_by_thin, r.held_waiting);
+                  r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin, r.split_passes, r.held.eye, r.held.grading,
+                  r.held.thin, r.held.waiting);
     out << line;
   }
 }

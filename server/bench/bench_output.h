@@ -34,7 +34,7 @@ struct Summary {
   double mean_fovea_width_arcmin = 0.0;
   double mean_fovea_mar_arcmin = 0.0;
   // foveated: the mean a frame of the particles finer than the coarsest level that a rule keeps
-  // from merging (FrameRecord::held_by_eye and the rest).
+  // from merging (FrameRecord::held).
   double mean_held_by_eye = 0.0, mean_held_by_grading = 0.0, mean_held_by_thin = 0.0, mean_held_waiting = 0.0;
   double mean_density_ratio = 0.0, max_density_ratio = 0.0;
   std::size_t nan_values = 0, outside_box = 0;

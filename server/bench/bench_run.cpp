@@ -125,10 +125,7 @@ void SceneRun::stepFrame() {
     r.merges = controller_->lastStats().merges;
     r.merge_unpaired = controller_->lastStats().merge_wanted - 2 * r.merges;
     r.split_passes = controller_->lastStats().split_passes;
-    r.held_by_eye = controller_->lastStats().held_by_eye;
-    r.held_by_grading = controller_->lastStats().held_by_grading;
-    r.held_by_thin = controller_->lastStats().held_by_thin;
-    r.held_waiting = controller_->lastStats().held_waiting;
+    r.held = controller_->lastStats().held;
     r.gaze_mode = controller_->lastStats().gaze_mode;
     r.visible = controller_->lastStats().visible;
     r.over_budget = controller_->lastStats().over_budget;

@@ -39,12 +39,7 @@ struct FrameRecord {
   int merges = 0;
   int merge_unpaired = 0;  // particles flagged MERGE that found no partner
   int split_passes = 0;    // the adaptive step's decisions (AdaptiveStats::split_passes); 0: none
-  // foveated: particles finer than the coarsest level that a rule keeps from merging
-  // (AdaptiveStats::held_by_eye and the rest).
-  int held_by_eye = 0;
-  int held_by_grading = 0;
-  int held_by_thin = 0;
-  int held_waiting = 0;
+  sph::HeldFiner held;     // foveated: particles finer than the coarsest level a rule keeps from merging
   sph::GazeMode gaze_mode = sph::GazeMode::None;
   // foveated: what the eye gets (adaptive/perceptual_budget.h): visible particles, those wider
   // than the eye's acuity at their eccentricity allows, and the particle under the gaze.

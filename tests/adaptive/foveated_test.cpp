@@ -315,10 +315,9 @@ TEST(Foveated, EveryFinerParticleIsKeptByARuleOrAsksToMerge) {
     for (std::size_t i = 0; i < p.size(); ++i) finer += sph::levelIndex(p.level[i]) < coarsest;
     rig.sim->step();
     const sph::AdaptiveStats& st = rig.controller->lastStats();
-    ASSERT_EQ(st.held_by_eye + st.held_by_grading + st.held_by_thin + st.held_waiting + st.merge_wanted, finer)
-        << "frame " << s;
-    by_eye += st.held_by_eye;
-    by_grading += st.held_by_grading;
+    ASSERT_EQ(st.held.total() + st.merge_wanted, finer) << "frame " << s;
+    by_eye += st.held.eye;
+    by_grading += st.held.grading;
     finer_seen += finer;
   }
   std::printf("finer than the coarsest over 60 frames: %d, kept by the eye %d, by grading %d\n", finer_seen, by_eye,

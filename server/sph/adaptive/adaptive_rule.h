@@ -20,12 +20,7 @@ struct AdaptiveStats {
   int split_wanted = 0;  // particles whose decision was SPLIT (including ones with no room)
   int merge_wanted = 0;  // particles whose decision was MERGE (including unpaired ones)
   int split_passes = 1;  // decisions this step: foveated adds split passes after a saccade
-  // foveated: the particles finer than the coarsest level that the rules keep from merging, by
-  // rule (FoveatedView); zero for the thesis's methods.
-  int held_by_eye = 0;
-  int held_by_grading = 0;
-  int held_by_thin = 0;
-  int held_waiting = 0;
+  HeldFiner held;        // foveated (FoveatedView); zero for the thesis's methods
   GazeMode gaze_mode = GazeMode::None;
   // foveated: what the eye gets (perceptual_budget.h), measured after the step's splits; zero
   // (and -1) for the thesis's methods.

@@ -31,6 +31,16 @@ struct DecisionCounts {
   int merge_wanted = 0;
 };
 
+// foveated: the particles finer than the coarsest level that the rules keep from merging, by the
+// first rule in this order that does (the others ask to merge).
+struct HeldFiner {
+  int eye = 0;      // acuity, or not hidden deep enough under the surface
+  int grading = 0;  // a finer level within a merged particle's reach
+  int thin = 0;     // thin or shallow water
+  int waiting = 0;  // placed this frame or earlier, or within the merge hold
+  int total() const { return eye + grading + thin + waiting; }
+};
+
 // Surface based, eqs. (3.44)-(3.46): the character field from the distance to the surface (or a
 // boundary), the pressure and the neighbour count. Uses the neighbour lists and |n| of the step
 // that just ran, and updates the particles' surface_distance: d_i = 0 on the surface, else the

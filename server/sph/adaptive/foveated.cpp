@@ -202,12 +202,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   }
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
   view.still_coarse = still_coarse;
-  if (!splits_only) {
-    view.held_by_eye = held_by_eye;
-    view.held_by_grading = held_by_grading;
-    view.held_by_thin = held_by_thin;
-    view.held_waiting = held_waiting;
-  }
+  if (!splits_only) view.held = {held_by_eye, held_by_grading, held_by_thin, held_waiting};
   view.fovea_depth = scratch.fovea_depth;
   return {split_wanted, merge_wanted};
 }

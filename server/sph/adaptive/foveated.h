@@ -41,12 +41,7 @@ struct FoveatedView {
   // step is for them.
   int still_coarse = 0;
   float fovea_depth = 0.0f;  // distance of the water at the gaze point, metres
-  // Particles finer than the coarsest level, by what keeps each from merging (the first rule in
-  // this order that does), counted by a step's first decision; the others' decision is MERGE.
-  int held_by_eye = 0;      // acuity, or not hidden deep enough under the surface
-  int held_by_grading = 0;  // a finer level within a merged particle's reach
-  int held_by_thin = 0;     // thin or shallow water
-  int held_waiting = 0;     // placed this frame or earlier, or within the merge hold
+  HeldFiner held;            // counted by a step's first decision
 };
 
 // Per-particle scratch of the decision, kept between steps so the step does not allocate.

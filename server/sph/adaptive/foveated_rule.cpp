@@ -20,10 +20,7 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
                                                changes.decisions(sim.particles().size()), scratch_, view);
   stats.split_wanted = wanted.split_wanted;
   stats.merge_wanted = wanted.merge_wanted;
-  stats.held_by_eye = view.held_by_eye;
-  stats.held_by_grading = view.held_by_grading;
-  stats.held_by_thin = view.held_by_thin;
-  stats.held_waiting = view.held_waiting;
+  stats.held = view.held;
   const SplitMergeCounts counts = changes.apply(sim, wanted, coarsest(in.levels), stragglerReach());
   stats.splits = counts.splits;
   stats.merges = counts.merges;
