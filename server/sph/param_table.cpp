@@ -127,6 +127,8 @@ std::vector<ParamSpec> adaptiveRows() {
        "the coarsest level thin and shallow water takes (at most the run's coarsest)"},
       {"foveated_shallow_spread", nullptr, "foveated", &A::foveated_shallow_spread, 0, 1, false, false, "",
        "water whose neighbours spread less than this share across their thinnest direction is shallow"},
+      {"foveated_grading_step", nullptr, "foveated", &A::foveated_grading_step, 1, 7, false, false, "levels",
+       "a particle may be at most this many levels coarser than its finest neighbour"},
       {"foveated_merge_hold_s", nullptr, "foveated", &A::foveated_merge_hold_s, 0, 600, false, false, "s",
        "a merge waits until the eye has allowed the coarser level this long; 0: at once"},
   };

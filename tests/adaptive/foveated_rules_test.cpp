@@ -38,11 +38,11 @@ TEST(FoveatedRules, HiddenWaterMayGoCoarsestAndMergesPastTheMarginsDepth) {
 
 TEST(FoveatedRules, GradedKeepsOneLevelAboveTheFinestNeighbour) {
   sph::LevelBounds b{kCoarsest, kCoarsest, kCoarsest};
-  sph::gradedRule(b, 0, 0);
+  sph::gradedRule(b, 0, 0, 1);
   EXPECT_EQ(b.target, 1);
   EXPECT_EQ(b.merge_upto, 1);
   sph::LevelBounds far{kCoarsest, kCoarsest, kCoarsest};
-  sph::gradedRule(far, 2, 1);  // L2 beside it, L1 within a merged particle's reach
+  sph::gradedRule(far, 2, 1, 1);  // L2 beside it, L1 within a merged particle's reach
   EXPECT_EQ(far.target, 3);
   EXPECT_EQ(far.merge_upto, 2);
 }

@@ -326,6 +326,48 @@ TEST(Foveated, EveryFinerParticleIsKeptByARuleOrAsksToMerge) {
   EXPECT_GT(by_grading, 0);
 }
 
+// Grading as the decision sees it: after each frame, the neighbour pairs whose levels differ by
+// more than foveated_grading_step (a split the step just made, which its neighbours follow in
+// the next) are few, and pairs that differ by the full step exist wherever the step is wider
+// than one level.
+struct LevelGaps {
+  long pairs = 0;
+  long at_step = 0;
+  long past_step = 0;
+};
+LevelGaps levelGapsOverASurge(int step) {
+  sph::Scene scene = surgeScene("pbf");
+  scene.adaptive.foveated_grading_step = step;
+  Rig rig = foveatedRig(scene);
+  LevelGaps gaps;
+  for (int s = 0; s < 60; ++s) {
+    rig.controller->setGaze(gazeAt(0.45, 0.55));
+    rig.sim->step();
+    if (s < 20) continue;  // the levels form from the coarsest start
+    rig.sim->rebuildNeighbors();
+    const sph::ParticleSet& p = rig.sim->particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      for (const std::uint32_t j : rig.sim->grid().neighbors(i)) {
+        const int gap = std::abs(sph::levelIndex(p.level[i]) - sph::levelIndex(p.level[j]));
+        ++gaps.pairs;
+        gaps.at_step += gap == step;
+        gaps.past_step += gap > step;
+      }
+    }
+  }
+  std::printf("grading step %d: %ld neighbour pairs, %ld the step apart, %ld farther\n", step, gaps.pairs, gaps.at_step,
+              gaps.past_step);
+  return gaps;
+}
+
+TEST(Foveated, NeighboursDifferByAtMostTheGradingStep) {
+  for (const int step : {1, 2}) {
+    const LevelGaps gaps = levelGapsOverASurge(step);
+    EXPECT_GT(gaps.at_step, 0) << "step " << step;
+    EXPECT_LE(gaps.past_step, gaps.pairs / 1000) << "step " << step;
+  }
+}
+
 // After a saccade across the water, every seen particle near the new gaze point is as fine as
 // the eye resolves there (the finest level at the gaze point itself) within three frames.
 TEST(Foveated, ANewFoveaIsAtItsLevelsWithinThreeFrames) {

@@ -18,7 +18,8 @@ namespace {
 constexpr float kFoveaDeg = 1.0f;
 
 // The finest level below `level` among particle i's neighbours and theirs that lies within
-// sqrt(reach2) of it, or `level` where none does. `finest_near[k]`: the finest level among k and
+// sqrt(reach2) of it, or `level` where none does (`level`: here the finest a merged particle may
+// border). `finest_near[k]`: the finest level among k and
 // its neighbours, so only the neighbours with a finer one are searched.
 int finestWithin(const ParticleSet& p, const NeighborGrid& grid, const std::vector<std::int8_t>& finest_near,
                  std::size_t i, int level, float reach2) {
@@ -75,12 +76,13 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto margin = static_cast<float>(config.foveated_coarsen_margin);
   const auto thin_fill = static_cast<float>(config.foveated_thin_fill);
   const int thin_level = std::clamp(config.foveated_thin_level, 0, coarsest);
+  const int step = std::clamp(config.foveated_grading_step, 1, kMaxLevels - 1);
   // How far a particle of level k merged with a partner reaches: it lands half the pair's
-  // distance away (the partner is a neighbour: within h_k), and reaches a particle of level k - 1
-  // within (h_k+1 + h_k-1) / 2, eq. (3.34).
+  // distance away (the partner is a neighbour: within h_k), and reaches a particle of level
+  // k - step, the coarsest the grading forbids it, within (h_k+1 + h_k-step) / 2, eq. (3.34).
   float merged_reach2[kMaxLevels] = {};
-  for (int k = 1; k < coarsest; ++k) {
-    const double reach = 0.5 * levels[k].support + 0.5 * (levels[k + 1].support + levels[k - 1].support);
+  for (int k = step; k < coarsest; ++k) {
+    const double reach = 0.5 * levels[k].support + 0.5 * (levels[k + 1].support + levels[k - step].support);
     merged_reach2[k] = static_cast<float>(reach * reach);
   }
 
@@ -156,12 +158,16 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         moment.noalias() += r * r.transpose();
       }
       const int merge_by_eye = bounds.merge_upto;
-      // Within two hops is where a finer level may lie within a merged particle's reach; where
-      // one does and the eye would let the particle merge, measure whether it is within it.
-      const bool measure_reach = finest_two_hops < level && finest_neighbour >= level && merge_by_eye > level;
+      // Within two hops is where a level the merged particle may not border (finer than
+      // `allowed_below`) may lie within its reach; where one does and the eye would let the
+      // particle merge, measure whether it is within it.
+      const int allowed_below = level + 1 - step;
+      const bool measure_reach =
+          finest_two_hops < allowed_below && finest_neighbour >= allowed_below && merge_by_eye > level;
       const int finest_in_reach =
-          measure_reach ? finestWithin(p, grid, scratch.finest_near, i, level, merged_reach2[level]) : finest_two_hops;
-      gradedRule(bounds, finest_neighbour, finest_in_reach);
+          measure_reach ? finestWithin(p, grid, scratch.finest_near, i, allowed_below, merged_reach2[level])
+                        : finest_two_hops;
+      gradedRule(bounds, finest_neighbour, finest_in_reach, step);
       const int merge_by_grading = bounds.merge_upto;
       // How full the particle's support is: its density, which every level estimates alike. A
       // flat free surface fills about half of it; a sheet thinner than the support, a jet or a

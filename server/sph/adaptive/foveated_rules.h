@@ -34,13 +34,13 @@ inline void hiddenRule(LevelBounds& b, float depth_below_surface, float hidden_d
   if (depth_below_surface >= hidden_depth * margin) b.merge_upto = b.eye_margin = coarsest;
 }
 
-// graded: at most one level coarser than the finest neighbour; a merged particle reaches farther
-// than either of its pair, so no level finer than one below its own may lie within its reach
-// (`finest_in_merged_reach`: the finest level there, which the decision measures), or the merged
-// particle would split again.
-inline void gradedRule(LevelBounds& b, int finest_neighbour, int finest_in_merged_reach) {
-  b.target = std::min(b.target, finest_neighbour + 1);
-  b.merge_upto = std::min(b.merge_upto, finest_in_merged_reach + 1);
+// graded: at most `step` levels coarser than the finest neighbour; a merged particle reaches
+// farther than either of its pair, so no level more than `step` below its own may lie within its
+// reach (`finest_in_merged_reach`: the finest level there, which the decision measures), or the
+// merged particle would split again.
+inline void gradedRule(LevelBounds& b, int finest_neighbour, int finest_in_merged_reach, int step) {
+  b.target = std::min(b.target, finest_neighbour + step);
+  b.merge_upto = std::min(b.merge_upto, finest_in_merged_reach + step);
 }
 
 // thin: a support filled below `thin_fill` of rho0 (a sheet, a jet, a drop) keeps the particle at

@@ -94,6 +94,11 @@ struct AdaptiveConfig {
   // stays at most at the thin level: a layer under a coarse particle's width reads a low density
   // and loses its volume.
   double foveated_shallow_spread = 0.5;
+  // A particle may be at most this many levels coarser than its finest neighbour (grading: each
+  // level holds the next coarser ones within its reach, so the fine water around the eye spreads
+  // in one shell per level). Every pair takes the kernel of its mean support whatever its levels
+  // (pair_kernel.inc), so a wider step is a trade of the mixed pairs' accuracy for fewer shells.
+  int foveated_grading_step = 2;
   // A merge waits until the eye has allowed the coarser level this many seconds without a break:
   // a gaze that comes back within it finds the water as it left it, so still water under a
   // moving gaze changes levels, and is stirred by the changes, far less; moving water keeps the
