@@ -14,7 +14,9 @@ namespace sph {
 
 namespace {
 
-// The gaze point's water: the nearest particle within this eccentricity.
+// The gaze point's water: the nearest particle whose disc covers the gaze point (what the eye
+// sees there), or where none does (the gaze between particles, or just off the water's edge) the
+// nearest within this eccentricity.
 constexpr float kFoveaDeg = 1.0f;
 
 // The finest level below `level` among particle i's neighbours and theirs that lies within
@@ -90,12 +92,15 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   scratch.depth.resize(n);
   scratch.finest_near.resize(n);
   const float last_fovea = scratch.fovea_depth;
-  float fovea = std::numeric_limits<float>::infinity();  // the threads' nearest, combined
+  // The threads' nearest, combined: under the gaze point, and within kFoveaDeg of it.
+  float fovea_under = std::numeric_limits<float>::infinity();
+  float fovea_near = std::numeric_limits<float>::infinity();
   int split_wanted = 0, merge_wanted = 0, still_coarse = 0;
   int held_by_eye = 0, held_by_grading = 0, held_by_thin = 0, held_waiting = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse, held_by_eye, held_by_grading, \
                                    held_by_thin, held_waiting)
   {
+    float nearest_under = std::numeric_limits<float>::infinity();
     float nearest = std::numeric_limits<float>::infinity();
     const ThreadShare share = threadShare(n);
     // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
@@ -116,15 +121,21 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // half a support from either, and is 2^(1/3) as wide. The governor coarsens the periphery,
       // never the gaze point.
       const float merge_reach = std::cbrt(2.0f) + 0.5f * p.support[i] / p.radius[i];
-      const bool gazed_on = e <= discRadiusDeg(disc.radius, tan_half) * merge_reach;
+      const float disc_deg = discRadiusDeg(disc.radius, tan_half);
+      const bool gazed_on = e <= disc_deg * merge_reach;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
       // apart from the distance ratio, 0 behind the eye).
       scratch.allowed[i] = on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
+      if (on_screen && e <= disc_deg) nearest_under = std::min(nearest_under, depth);
       if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
     }
 #pragma omp critical(sph_fovea_depth)
-    fovea = std::min(fovea, nearest);
+    {
+      fovea_under = std::min(fovea_under, nearest_under);
+      fovea_near = std::min(fovea_near, nearest);
+    }
 #pragma omp barrier
+    const float fovea = std::isfinite(fovea_under) ? fovea_under : fovea_near;
     // The water at the gaze point: this step's where the gaze falls on water, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
@@ -206,6 +217,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       merge_wanted += decision == kMerge;
     }
   }
+  const float fovea = std::isfinite(fovea_under) ? fovea_under : fovea_near;
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
   view.still_coarse = still_coarse;
   if (!splits_only) view.held = {held_by_eye, held_by_grading, held_by_thin, held_waiting};
