@@ -27,13 +27,22 @@ TEST(FoveatedRules, AcuityTakesTheCoarsestLevelTheEyeAllowsAndWaitsForTheMarginT
 
 TEST(FoveatedRules, HiddenWaterMayGoCoarsestAndMergesPastTheMarginsDepth) {
   sph::LevelBounds b = sph::acuityBounds(1.0f, kWidth, kCoarsest, kMargin);
-  sph::hiddenRule(b, 0.10f, 0.12f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.10f, 0.12f, 1.0f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.target, 0) << "not deep enough";
-  sph::hiddenRule(b, 0.13f, 0.12f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.13f, 0.12f, 1.0f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.target, kCoarsest);
   EXPECT_EQ(b.merge_upto, 0) << "0.13 < 0.12 x 1.25";
-  sph::hiddenRule(b, 0.16f, 0.12f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.16f, 0.12f, 1.0f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.merge_upto, kCoarsest);
+}
+
+TEST(FoveatedRules, ALayerIsNeverHidden) {
+  sph::LevelBounds b = sph::acuityBounds(1.0f, kWidth, kCoarsest, kMargin);
+  sph::hiddenRule(b, 0.5f, 0.12f, 0.3f, 0.5f, kMargin, kCoarsest);
+  EXPECT_EQ(b.target, 0) << "a sheet as deep as it is wide is still a sheet";
+  sph::hiddenRule(b, 0.5f, 0.12f, 0.55f, 0.5f, kMargin, kCoarsest);
+  EXPECT_EQ(b.target, kCoarsest);
+  EXPECT_EQ(b.merge_upto, 0) << "0.55 < 0.5 x 1.25: no merge yet";
 }
 
 TEST(FoveatedRules, GradedKeepsOneLevelAboveTheFinestNeighbour) {

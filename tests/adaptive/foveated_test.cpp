@@ -257,6 +257,33 @@ TEST(Foveated, ShallowWaterOnTheFloorKeepsItsVolume) {
   EXPECT_LT(std::abs(swell), 0.03);
 }
 
+// A block dropped into a wide box spreads into a sheet thinner than the support, which has no
+// particle the free-surface test finds (its faces' colour-field gradients cancel), so its
+// surface distance reads it as deep as it is wide; the hidden rule must not take it for water
+// under the surface: the particle under the gaze on the sheet is L0.
+TEST(Foveated, TheGazeOnASpreadSheetFindsTheFinestLevel) {
+  sph::Scene scene = poolScene(1.0, 1.0, 1350);
+  ASSERT_TRUE(sph::presetByName("pbf", scene.params));
+  scene.boundary.box.max.y() = 0.6;
+  scene.water.min = Eigen::Vector3d(0.345, 0.1, 0.345);  // 0.31 m a side: a sheet about 2.7 cm deep
+  scene.water.max = Eigen::Vector3d(0.655, 0.41, 0.655);
+  Rig rig = foveatedRig(scene);
+  int on_water = 0, finest = 0;
+  for (int s = 0; s < 400; ++s) {
+    // Elsewhere while the block falls and spreads, then on the sheet's middle, which has been
+    // coarse meanwhile.
+    rig.controller->setGaze(s < 300 ? gazeAt(0.15, 0.85) : gazeAt(0.5, 0.5));
+    rig.sim->step();
+    const int level = rig.controller->lastStats().fovea_level;
+    if (s < 303 || level < 0) continue;  // three frames for the new fovea
+    ++on_water;
+    finest += level == 0;
+  }
+  std::printf("spread sheet: the gaze on water in %d of 97 frames, at L0 in %d\n", on_water, finest);
+  ASSERT_GT(on_water, 87);
+  EXPECT_GE(finest, on_water * 9 / 10);
+}
+
 // The real-time governor's periphery gain coarsens the water around the gaze, not the particle the
 // gaze falls on: at g = 16 that particle stays as fine as g = 1 allows it (L1 or finer in this
 // view, where the eye allows a particle a degree off the gaze L3 at that gain).

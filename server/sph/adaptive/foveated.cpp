@@ -154,11 +154,8 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // In finest widths at the gaze; unseen water (inf) stays inf whatever its distance.
       const bool seen = std::isfinite(scratch.allowed[i]);
       const float allowed = seen ? scratch.allowed[i] * distance_ratio : scratch.allowed[i];
-      LevelBounds bounds = acuityBounds(allowed, width, coarsest, margin);
-      hiddenRule(bounds, p.surface_distance[i], hidden_depth, margin, coarsest);
-      const int eye_level = bounds.target;  // what the eye needs, for the further split passes
       // The finest level among the neighbours, and within two hops (grading), and the second
-      // moment of the neighbours' offsets about i (shallow water).
+      // moment of the neighbours' offsets about i (hidden and shallow water).
       int finest_neighbour = coarsest;
       int finest_two_hops = scratch.finest_near[i];
       Eigen::Matrix3f moment = Eigen::Matrix3f::Zero();
@@ -168,6 +165,18 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         const Eigen::Vector3f r = p.position[j] - p.position[i];
         moment.noalias() += r * r.transpose();
       }
+      // The neighbours' spread, measured once and only where a rule reads it (an eigenvalue
+      // solve where the determinant's bound does not settle it).
+      float spread = -1.0f;
+      const auto spreadOfNeighbours = [&] {
+        if (spread < 0.0f) spread = neighbourSpread(moment, least_spread * margin);
+        return spread;
+      };
+      LevelBounds bounds = acuityBounds(allowed, width, coarsest, margin);
+      if (p.surface_distance[i] >= hidden_depth) {
+        hiddenRule(bounds, p.surface_distance[i], hidden_depth, spreadOfNeighbours(), least_spread, margin, coarsest);
+      }
+      const int eye_level = bounds.target;  // what the eye needs, for the further split passes
       const int merge_by_eye = bounds.merge_upto;
       // Within two hops is where a level the merged particle may not border (finer than
       // `allowed_below`) may lie within its reach; where one does and the eye would let the
@@ -185,7 +194,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // drop less.
       thinRule(bounds, p.density[i] / rest_density, thin_fill, margin, thin_level);
       if (shallowCounts(bounds, thin_level)) {
-        shallowRule(bounds, neighbourSpread(moment, least_spread * margin), least_spread, margin, thin_level);
+        shallowRule(bounds, spreadOfNeighbours(), least_spread, margin, thin_level);
       }
       // A merge needs the eye to have allowed the coarser level for the hold without a break
       // (counted once a step, by the step's first decision).

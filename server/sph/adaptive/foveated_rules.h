@@ -28,10 +28,16 @@ inline LevelBounds acuityBounds(float allowed, const float* width, int coarsest,
 }
 
 // hidden: water at least `hidden_depth` under the free surface may be coarsest; merging there
-// needs `margin` times that depth.
-inline void hiddenRule(LevelBounds& b, float depth_below_surface, float hidden_depth, float margin, int coarsest) {
-  if (depth_below_surface >= hidden_depth) b.target = coarsest;
-  if (depth_below_surface >= hidden_depth * margin) b.merge_upto = b.eye_margin = coarsest;
+// needs `margin` times that depth. Not water whose neighbours spread as a layer (`spread` below
+// `least_spread`, as the shallow rule reads it, and `margin` times it for a merge): a sheet
+// thinner than the support has no particle the free-surface test finds (its faces' colour-field
+// gradients cancel), so the surface distance reads it as deep as it is wide.
+inline void hiddenRule(LevelBounds& b, float depth_below_surface, float hidden_depth, float spread, float least_spread,
+                       float margin, int coarsest) {
+  if (depth_below_surface >= hidden_depth && spread >= least_spread) b.target = coarsest;
+  if (depth_below_surface >= hidden_depth * margin && spread >= least_spread * margin) {
+    b.merge_upto = b.eye_margin = coarsest;
+  }
 }
 
 // graded: at most `step` levels coarser than the finest neighbour; a merged particle reaches
