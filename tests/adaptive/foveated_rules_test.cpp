@@ -45,7 +45,7 @@ TEST(FoveatedRules, ALayerIsNeverHidden) {
   EXPECT_EQ(b.merge_upto, 0) << "0.55 < 0.5 x 1.25: no merge yet";
 }
 
-TEST(FoveatedRules, GradedKeepsOneLevelAboveTheFinestNeighbour) {
+TEST(FoveatedRules, GradedKeepsAStepAboveTheFinestNeighbour) {
   sph::LevelBounds b{kCoarsest, kCoarsest, kCoarsest};
   sph::gradedRule(b, 0, 0, 1);
   EXPECT_EQ(b.target, 1);
@@ -54,6 +54,10 @@ TEST(FoveatedRules, GradedKeepsOneLevelAboveTheFinestNeighbour) {
   sph::gradedRule(far, 2, 1, 1);  // L2 beside it, L1 within a merged particle's reach
   EXPECT_EQ(far.target, 3);
   EXPECT_EQ(far.merge_upto, 2);
+  sph::LevelBounds wide{kCoarsest, kCoarsest, kCoarsest};
+  sph::gradedRule(wide, 0, 0, 2);  // a step of two levels: L2 may border L0
+  EXPECT_EQ(wide.target, 2);
+  EXPECT_EQ(wide.merge_upto, 2);
 }
 
 TEST(FoveatedRules, ThinWaterStaysAtTheThinLevel) {

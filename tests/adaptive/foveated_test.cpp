@@ -1,8 +1,9 @@
 // The foveated method (adaptive/foveated.h): more than two levels, sized by the eye's acuity, on
 // the incompressible solvers: mass exact by level through many level changes, the same result for
 // any thread count, levels that hold still under a still gaze, a rule or a merge request for
-// every particle finer than the coarsest level, and a new fovea at its levels within three frames
-// of a saccade.
+// every particle finer than the coarsest level, neighbours within the grading step, the finest
+// level under the gaze on a spread sheet, and a new fovea at its levels within three frames of a
+// saccade.
 #include <gtest/gtest.h>
 #include <omp.h>
 

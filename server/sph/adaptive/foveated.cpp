@@ -19,10 +19,10 @@ namespace {
 // nearest within this eccentricity.
 constexpr float kFoveaDeg = 1.0f;
 
-// The finest level below `level` among particle i's neighbours and theirs that lies within
-// sqrt(reach2) of it, or `level` where none does (`level`: here the finest a merged particle may
-// border). `finest_near[k]`: the finest level among k and
-// its neighbours, so only the neighbours with a finer one are searched.
+// The finest level below `level` (the finest a merged particle may border) among particle i's
+// neighbours and theirs that lies within sqrt(reach2) of it, or `level` where none does.
+// `finest_near[k]`: the finest level among k and its neighbours, so only the neighbours with a
+// finer one are searched.
 int finestWithin(const ParticleSet& p, const NeighborGrid& grid, const std::vector<std::int8_t>& finest_near,
                  std::size_t i, int level, float reach2) {
   const Vec3 xi = p.position[i];

@@ -9,14 +9,15 @@
 //            coarsest whose width, seen from its distance, stays within that. Eccentricity e is
 //            the angle between the gaze and the particle as the user sees the display (its size
 //            in the visual field is a setting), not as the camera renders it.
-//   hidden   water deeper under the free surface than a few finest spacings may be coarsest.
+//   hidden   water deeper under the free surface than a few finest spacings may be coarsest,
+//            unless its neighbours lie nearly in one layer (a sheet the surface test misses).
 //   thin     a particle with a thin neighbourhood (a sheet, a jet, a drop, the front's tip) stays
 //            at most at the thin level, so thin water keeps particles across it.
 //   shallow  a particle whose neighbours lie nearly in one layer (water spread on the floor
 //            thinner than the particle is wide) stays at most at the thin level.
-//   graded   no particle is more than one level coarser than its finest neighbour: every pair
-//            the solvers see is of one level or two neighbouring ones (mass ratio 2, as the
-//            thesis's L0-L1 pairs); a merge needs no finer level within the merged particle's reach.
+//   graded   no particle is more than foveated_grading_step levels coarser than its finest
+//            neighbour (2: mass ratio 4 at most in a pair the solvers see); a merge needs no
+//            level beyond the step within the merged particle's reach.
 //
 // Every particle writes only its own decision and target: the result does not depend on the
 // thread count.
