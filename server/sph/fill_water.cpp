@@ -1,5 +1,6 @@
 #include "sph/fill_water.h"
 
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -7,6 +8,36 @@
 #include <vector>
 
 namespace sph {
+
+namespace {
+
+// The lattice sites of `level` in the scene's water region, along each axis.
+std::array<int, 3> latticeCells(const Scene& scene, const LevelProps& props, const FluidSolver& solver) {
+  const double spacing = std::cbrt(props.mass / scene.params.rest_density);
+  const double inset = solver.fillInset(spacing, props.radius);
+  std::array<int, 3> cells{};
+  for (int a = 0; a < 3; ++a) {
+    const double room = scene.water.max[a] - scene.water.min[a] - 2.0 * inset;
+    cells[static_cast<std::size_t>(a)] = room < 0.0 ? 0 : static_cast<int>(std::floor(room / spacing)) + 1;
+  }
+  return cells;
+}
+
+long siteCount(const std::array<int, 3>& cells) { return static_cast<long>(cells[0]) * cells[1] * cells[2]; }
+
+}  // namespace
+
+Level fillingLevel(const Scene& scene, Level wanted, const FluidSolver& solver) {
+  const auto levels = scene.params.levelProps();
+  for (int k = levelIndex(wanted); k >= 0; --k) {
+    const Level level = asLevel(k);
+    if (siteCount(latticeCells(scene, levels[static_cast<std::size_t>(k)], solver)) >=
+        initialParticleCount(scene, level)) {
+      return level;
+    }
+  }
+  return wanted;
+}
 
 void fillWater(const Scene& scene, Level start_class, const FluidSolver& solver, ParticleSet& out) {
   const auto levels = scene.params.levelProps();
@@ -23,12 +54,8 @@ void fillWater(const Scene& scene, Level start_class, const FluidSolver& solver,
   }
   const double spacing = std::cbrt(props.mass / scene.params.rest_density);
   const double inset = solver.fillInset(spacing, props.radius);
-  int cells[3];
-  for (int a = 0; a < 3; ++a) {
-    const double room = scene.water.max[a] - scene.water.min[a] - 2.0 * inset;
-    cells[a] = room < 0.0 ? 0 : static_cast<int>(std::floor(room / spacing)) + 1;
-  }
-  const long capacity = static_cast<long>(cells[0]) * cells[1] * cells[2];
+  const std::array<int, 3> cells = latticeCells(scene, props, solver);
+  const long capacity = siteCount(cells);
   if (capacity < count) {
     throw std::invalid_argument(scene.source + ": water region holds " + std::to_string(capacity) + " " +
                                 levelName(start_class) + " particles at spacing " + std::to_string(spacing) +

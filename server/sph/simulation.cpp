@@ -14,7 +14,8 @@ Simulation::Simulation(const Scene& scene, Level start_class, std::size_t capaci
     : scene_(scene), particles_(capacity), start_class_(start_class) {
   scene_.params.validate();
   solver_ = makeFluidSolver(scene_);
-  fillWater(scene_, start_class, *solver_, particles_);
+  start_class_ = fillingLevel(scene_, start_class, *solver_);
+  fillWater(scene_, start_class_, *solver_, particles_);
   configureGrid();
   solver_->settleFreshWater({scene_, particles_, grid_, 0.0, scene_.params.time_step, false, timings_, solver_stats_});
   timings_ = PhaseTimings{};

@@ -1,6 +1,7 @@
 // The water's first fill (scene.h, fill_water.h): every start level holds the same mass, the
-// rest of a coarse fill going to one particle each of some finer levels, and a scene whose water
-// would not fit the particle capacity once refined to L0 is refused with the key named.
+// rest of a coarse fill going to one particle each of some finer levels, water a coarse lattice
+// cannot hold starts at the coarsest level whose lattice holds it, and a scene whose water would
+// not fit the particle capacity once refined to L0 is refused with the key named.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -52,6 +53,33 @@ TEST(FillWater, ACoarseStartHasTheRegularRunsMassExactly) {
   EXPECT_EQ(coarse.particles().countOf(sph::asLevel(3)), 250u);
   EXPECT_EQ(coarse.particles().countOf(sph::Level{1}), 1u);
   EXPECT_EQ(coarse.particles().totalMass(), regular.particles().totalMass());
+}
+
+// A 0.3 x 0.4 x 0.3 m region: its L3 lattice holds 324 sites, its L2 lattice 704.
+sph::Scene narrowTank(int large_particles) {
+  sph::Scene scene = tank(large_particles);
+  scene.boundary.box.max = Eigen::Vector3d(0.3, 0.4, 0.3);
+  scene.water.max = scene.boundary.box.max;
+  return scene;
+}
+
+TEST(FillWater, WaterTheCoarseLatticeCannotHoldStartsAtTheCoarsestLevelThatHoldsIt) {
+  const sph::Scene scene = narrowTank(1320);  // 330 L3 particles, 660 L2
+  const sph::Simulation regular(scene, sph::Level{0});
+  const sph::Simulation coarse(scene, sph::asLevel(3));
+  EXPECT_EQ(coarse.particles().countOf(sph::asLevel(3)), 0u);
+  EXPECT_EQ(coarse.particles().countOf(sph::asLevel(2)), 660u);
+  EXPECT_EQ(coarse.particles().totalMass(), regular.particles().totalMass());
+}
+
+TEST(FillWater, WaterNoLatticeHoldsIsRefused) {
+  const sph::Scene scene = narrowTank(1800);  // 3,600 L0 particles where the L0 lattice holds 3,042
+  try {
+    const sph::Simulation sim(scene, sph::asLevel(3));
+    FAIL() << "no level's lattice holds the water";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("water region holds"), std::string::npos) << e.what();
+  }
 }
 
 TEST(FillWater, WaterThatCannotRefineWithinTheCapacityIsRefused) {
