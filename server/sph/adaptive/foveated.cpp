@@ -95,6 +95,8 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   // The threads' nearest, combined: under the gaze point, and within kFoveaDeg of it.
   float fovea_under = std::numeric_limits<float>::infinity();
   float fovea_near = std::numeric_limits<float>::infinity();
+  // This step's fovea water, once the threads have combined theirs (inf: none within kFoveaDeg).
+  const auto fovea_now = [&] { return std::isfinite(fovea_under) ? fovea_under : fovea_near; };
   int split_wanted = 0, merge_wanted = 0, still_coarse = 0;
   int held_by_eye = 0, held_by_grading = 0, held_by_thin = 0, held_waiting = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse, held_by_eye, held_by_grading, \
@@ -135,7 +137,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       fovea_near = std::min(fovea_near, nearest);
     }
 #pragma omp barrier
-    const float fovea = std::isfinite(fovea_under) ? fovea_under : fovea_near;
+    const float fovea = fovea_now();
     // The water at the gaze point: this step's where the gaze falls on water, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
@@ -226,7 +228,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       merge_wanted += decision == kMerge;
     }
   }
-  const float fovea = std::isfinite(fovea_under) ? fovea_under : fovea_near;
+  const float fovea = fovea_now();
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
   view.still_coarse = still_coarse;
   if (!splits_only) view.held = {held_by_eye, held_by_grading, held_by_thin, held_waiting};
