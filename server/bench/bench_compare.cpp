@@ -114,6 +114,12 @@ std::string comparisonMarkdown(const std::vector<RunSummary>& runs) {
          return fixed(100.0 * r.summary.gaze_finest_share, 0) + " %, " + fixed(r.summary.mean_fovea_width_arcmin, 1) +
                 " / " + fixed(r.summary.mean_fovea_mar_arcmin, 2);
        }},
+      {"Saccades with L0 under the gaze by their third frame",
+       [](const RunSummary& r) {
+         if (r.summary.saccades_on_water == 0) return std::string("-");
+         return std::to_string(r.summary.saccades_finest_in_time) + " of " +
+                std::to_string(r.summary.saccades_on_water);
+       }},
       {"Mean neighbours", [](const RunSummary& r) { return fixed(r.summary.mean_neighbors, 1); }},
       {"rho/rho0 mean / max",
        [](const RunSummary& r) {

@@ -38,6 +38,29 @@ double volumeAtEnd(const RunResult& run) { return run.records.empty() ? 0.0 : ru
 
 }  // namespace
 
+// Summary's saccade counts: each saccade not followed by another within kSaccadeFrames frames,
+// judged at its kSaccadeFrames-th frame where the gaze falls on water there.
+static void countSaccades(const RunResult& run, Summary& s) {
+  const auto& records = run.records;
+  const auto jumps = [&](std::size_t f) { return records[f].gaze_jump_deg > kSaccadeDeg; };
+  for (std::size_t f = 0; f + kSaccadeFrames <= records.size(); ++f) {
+    if (!jumps(f)) continue;
+    const std::size_t judged = f + kSaccadeFrames - 1;
+    bool superseded = false;
+    for (std::size_t g = f + 1; g <= judged; ++g) superseded = superseded || jumps(g);
+    if (superseded || records[judged].fovea_level < 0) continue;
+    ++s.saccades_on_water;
+    s.saccades_finest_in_time += records[judged].fovea_level == 0;
+    // Frames to L0, counting the saccade's: on to the next saccade at most.
+    for (std::size_t g = f; g < records.size() && (g == f || !jumps(g)); ++g) {
+      if (records[g].fovea_level == 0) {
+        s.saccade_most_frames_to_finest = std::max(s.saccade_most_frames_to_finest, static_cast<int>(g - f + 1));
+        break;
+      }
+    }
+  }
+}
+
 Summary summarize(const RunResult& run) {
   Summary s;
   s.neighbor = stats(run, &sph::PhaseTimings::neighbor_ms);
@@ -73,6 +96,7 @@ Summary summarize(const RunResult& run) {
     s.nan_values += r.nan_values;
     s.outside_box += r.outside_box;
   }
+  countSaccades(run, s);
   if (s.gaze_on_water_frames > 0) {
     s.gaze_finest_share /= s.gaze_on_water_frames;
     s.mean_fovea_width_arcmin /= s.gaze_on_water_frames;
@@ -109,6 +133,10 @@ void writeSummaryJson(const RunResult& run, const Summary& s, const std::string&
   j["gaze_finest_share"] = s.gaze_finest_share;
   j["mean_fovea_width_arcmin"] = s.mean_fovea_width_arcmin;
   j["mean_fovea_mar_arcmin"] = s.mean_fovea_mar_arcmin;
+  j["saccades"] = {{"on_water", s.saccades_on_water},
+                   {"finest_within_frames", s.saccades_finest_in_time},
+                   {"frames", kSaccadeFrames},
+                   {"most_frames_to_finest", s.saccade_most_frames_to_finest}};
   j["mean_held_finer"] = {{"eye", s.mean_held_by_eye},
                           {"grading", s.mean_held_by_grading},
                           {"thin", s.mean_held_by_thin},
@@ -152,20 +180,20 @@ void writeFramesCsv(const RunResult& run, const std::string& path) {
          "adaptive_ms,total_ms,steps_per_s,mean_neighbors,mean_density_over_rho0,max_density_over_rho0,"
          "splits,merges,gaze_mode,merge_unpaired,rms_speed,volume,substeps,solver_iterations,"
          "divergence_iterations,placement_iterations,visible,over_budget,fovea_level,fovea_width_arcmin,"
-         "fovea_mar_arcmin,split_passes,held_by_eye,held_by_grading,held_by_thin,held_waiting\n";
+         "fovea_mar_arcmin,split_passes,held_by_eye,held_by_grading,held_by_thin,held_waiting,gaze_jump_deg\n";
   char line[720];
   for (const FrameRecord& r : run.records) {
     const double steps_per_s = r.ms.total_ms > 0.0 ? 1000.0 / r.ms.total_ms : 0.0;
     std::snprintf(line, sizeof line,
                   "%d,%.4f,%zu,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%.4f,%.4f,%d,%d,%s,%d,%.5f,%.6f,%d,%d,%d,%d,%d,%d,"
-                  "%d,%.3f,%.3f,%d,%d,%d,%d,%d\n",
+                  "%d,%.3f,%.3f,%d,%d,%d,%d,%d,%.3f\n",
                   r.frame, r.sim_time, r.particles(), levelCounts(r).c_str(), r.ms.neighbor_ms,
                   r.ms.density_pressure_ms, r.ms.accel_integrate_collide_ms, r.ms.adaptive_ms, r.ms.total_ms,
                   steps_per_s, r.mean_neighbors, r.mean_density_ratio, r.max_density_ratio, r.splits, r.merges,
                   sph::gazeModeName(r.gaze_mode), r.merge_unpaired, r.rms_speed, r.volume, r.substeps,
                   r.solver_iterations, r.divergence_iterations, r.placement_iterations, r.visible, r.over_budget,
                   r.fovea_level, r.fovea_width_arcmin, r.fovea_mar_arcmin, r.split_passes, r.held.eye, r.held.grading,
-                  r.held.thin, r.held.waiting);
+                  r.held.thin, r.held.waiting, r.gaze_jump_deg);
     out << line;
   }
 }
@@ -220,6 +248,11 @@ static std::string levelText(const Summary& s) {
     std::snprintf(buf, sizeof buf, " | under the gaze: L0 in %.0f %% of %d frames, %.1f' wide against MAR %.2f'",
                   100.0 * s.gaze_finest_share, s.gaze_on_water_frames, s.mean_fovea_width_arcmin,
                   s.mean_fovea_mar_arcmin);
+    text += buf;
+  }
+  if (s.saccades_on_water > 0) {
+    std::snprintf(buf, sizeof buf, "; after %d saccades L0 by frame %d in %d (at most %d frames)", s.saccades_on_water,
+                  kSaccadeFrames, s.saccades_finest_in_time, s.saccade_most_frames_to_finest);
     text += buf;
   }
   return text;

@@ -14,6 +14,13 @@ struct PhaseStats {
   double p95 = 0.0;
 };
 
+// A saccade (Summary): the gaze moves this far in a frame, degrees; fixational drift moves it a
+// small fraction of this in a frame, a saccade of the recordings' fixation model several times it.
+inline constexpr double kSaccadeDeg = 2.0;
+// The frames after a saccade within which the gaze point should be at L0 (the first counted the
+// saccade's own), as tests/adaptive/foveated_test.cpp checks on a small scene.
+inline constexpr int kSaccadeFrames = 3;
+
 struct Summary {
   PhaseStats neighbor, density_pressure, accel_integrate_collide, adaptive, total;
   double steps_per_s = 0.0;
@@ -33,6 +40,13 @@ struct Summary {
   double gaze_finest_share = 0.0;
   double mean_fovea_width_arcmin = 0.0;
   double mean_fovea_mar_arcmin = 0.0;
+  // Gazed methods: the saccades (the gaze jumping more than kSaccadeDeg in a frame, the next
+  // jump more than kSaccadeFrames frames later) after which the gaze falls on water in the
+  // kSaccadeFrames-th frame, those of them whose particle under the gaze is at L0 there, and the
+  // most frames any of them took to reach L0 (counting the saccade's; 0: none).
+  int saccades_on_water = 0;
+  int saccades_finest_in_time = 0;
+  int saccade_most_frames_to_finest = 0;
   // foveated: the mean a frame of the particles finer than the coarsest level that a rule keeps
   // from merging (FrameRecord::held).
   double mean_held_by_eye = 0.0, mean_held_by_grading = 0.0, mean_held_by_thin = 0.0, mean_held_waiting = 0.0;

@@ -2,6 +2,7 @@
 
 #include "bench/gaze_replay.h"
 #include "process/omp_wait.h"
+#include "sph/adaptive/display_geometry.h"
 #include "sph/camera.h"
 #include "sph/checkpoint.h"
 
@@ -97,6 +98,9 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   auto adaptive =
       sph::makeAdaptiveController(m, scene.params.levels, scene.adaptive, sph::cameraFromSpec(scene.camera));
   controller_ = adaptive.get();
+  const sph::ScreenCamera camera = sph::cameraFromSpec(scene.camera);
+  display_tan_half_ = sph::displayTanHalf(scene.adaptive, camera);
+  display_aspect_ = static_cast<float>(sph::Projector(camera).aspect());
   // The perceptual meter is the bench's instrument, not the method's cost: it runs after the
   // timed step (stepFrame), on the same particles.
   if (controller_ != nullptr) controller_->setMeasureEachStep(false);
@@ -116,9 +120,17 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
 
 void SceneRun::stepFrame() {
   omp_set_num_threads(options_.threads);
-  if (controller_ && needs_gaze_) controller_->setGaze(gazeInputAt(*options_.gaze, sim_->time()));
-  sim_->step();
   FrameRecord r;
+  if (controller_ && needs_gaze_) {
+    const sph::GazeInput gaze = gazeInputAt(*options_.gaze, sim_->time());
+    controller_->setGaze(gaze);
+    const Eigen::Vector3f direction = sph::screenDirection(static_cast<float>(gaze.x), static_cast<float>(gaze.y),
+                                                           display_tan_half_, display_aspect_);
+    if (gaze.present && had_gaze_) r.gaze_jump_deg = sph::angleDeg(direction, last_gaze_);
+    had_gaze_ = gaze.present;
+    last_gaze_ = direction;
+  }
+  sim_->step();
   if (controller_) {
     controller_->measureEye(*sim_);
     r.splits = controller_->lastStats().splits;

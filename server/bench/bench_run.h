@@ -48,6 +48,9 @@ struct FrameRecord {
   int fovea_level = -1;  // -1: the gaze falls on no water
   double fovea_width_arcmin = 0.0;
   double fovea_mar_arcmin = 0.0;
+  // Gazed methods: how far the gaze moved since the frame before, degrees of the display as the
+  // user sees it (display_geometry.h); -1 where either frame has no gaze.
+  double gaze_jump_deg = -1.0;
 };
 
 struct RunResult {
@@ -113,6 +116,11 @@ class SceneRun {
   bool needs_gaze_ = false;
   std::unique_ptr<sph::Simulation> sim_;
   sph::AdaptiveController* controller_ = nullptr;
+  // The display as the user sees it (display_geometry.h), and the last frame's gaze direction.
+  float display_tan_half_ = 1.0f;
+  float display_aspect_ = 1.0f;
+  bool had_gaze_ = false;
+  Eigen::Vector3f last_gaze_ = Eigen::Vector3f::UnitZ();
   RunResult result_;
   CpuSnapshot start_;
 };

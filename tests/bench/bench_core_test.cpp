@@ -177,6 +177,39 @@ TEST(BenchSummary, AnInterruptedRunSaysSoAndCountsTheFramesRun) {
   EXPECT_EQ(bench::framesText(s.run), "3000 frames");
 }
 
+// Saccades are read from the gaze's jumps between frames: a jump over several frames counts
+// once, at its last frame; one whose third frame falls off the water is not judged.
+TEST(BenchSummary, SaccadesCountWhetherTheGazePointIsAtL0ByTheThirdFrame) {
+  bench::RunResult run;
+  run.records.resize(40);
+  for (auto& r : run.records) {
+    r.gaze_jump_deg = 0.1;
+    r.fovea_level = 0;
+  }
+  // Frame 5: a one-frame saccade, L0 at once.
+  run.records[5].gaze_jump_deg = 6.0;
+  // Frames 10-11: a saccade over two frames; L2, L1, then L0 in the third frame after its last.
+  run.records[10].gaze_jump_deg = 4.0;
+  run.records[11].gaze_jump_deg = 5.0;
+  run.records[11].fovea_level = 2;
+  run.records[12].fovea_level = 1;
+  // Frame 20: too coarse still at its third frame, L0 in its fourth.
+  run.records[20].gaze_jump_deg = 8.0;
+  for (int f = 20; f <= 22; ++f) run.records[static_cast<std::size_t>(f)].fovea_level = 1;
+  // Frame 30: the gaze lands off the water.
+  run.records[30].gaze_jump_deg = 8.0;
+  for (int f = 30; f <= 32; ++f) run.records[static_cast<std::size_t>(f)].fovea_level = -1;
+  // A drift under the threshold is no saccade.
+  run.records[35].gaze_jump_deg = bench::kSaccadeDeg * 0.9;
+  run.records[35].fovea_level = 3;
+  const bench::Summary s = bench::summarize(run);
+  EXPECT_EQ(s.saccades_on_water, 3);
+  EXPECT_EQ(s.saccades_finest_in_time, 2);
+  EXPECT_EQ(s.saccade_most_frames_to_finest, 4);
+  EXPECT_NE(bench::summaryText(run, s).find("after 3 saccades L0 by frame 3 in 2 (at most 4 frames)"),
+            std::string::npos);
+}
+
 TEST(BenchCompare, TableHasOneColumnPerMethodAndTheRatioToRegular) {
   bench::RunSummary regular, gaze_run;
   regular.run.scene = gaze_run.run.scene = "dambreak";
