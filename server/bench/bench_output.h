@@ -14,11 +14,12 @@ struct PhaseStats {
   double p95 = 0.0;
 };
 
-// A saccade (Summary): the gaze moves this far in a frame, degrees; fixational drift moves it a
-// small fraction of this in a frame, a saccade of the recordings' fixation model several times it.
+// A saccade (Summary): the gaze moving more than this in a frame, degrees: at 10 ms frames 200
+// degrees a second, which only a saccade reaches (smooth pursuit stays under about 100).
 inline constexpr double kSaccadeDeg = 2.0;
-// The frames after a saccade within which the gaze point should be at L0 (the first counted the
-// saccade's own), as tests/adaptive/foveated_test.cpp checks on a small scene.
+// The frames within which the gaze point should be at L0 after a saccade, the saccade's own
+// frame the first (as Foveated.ANewFoveaIsAtItsLevelsWithinThreeFrames and BasinFovea check one
+// saccade each).
 inline constexpr int kSaccadeFrames = 3;
 
 struct Summary {

@@ -95,10 +95,9 @@ SceneRun::SceneRun(const sph::Scene& scene, const std::string& method, const Run
   // Room for every particle to split to L0, as sph_server allows (app/sim_session.cpp).
   const std::size_t capacity = sph::refinedCapacity(scene);
   sim_ = std::make_unique<sph::Simulation>(scene, sph::startLevel(m, scene.params.levels), capacity);
-  auto adaptive =
-      sph::makeAdaptiveController(m, scene.params.levels, scene.adaptive, sph::cameraFromSpec(scene.camera));
-  controller_ = adaptive.get();
   const sph::ScreenCamera camera = sph::cameraFromSpec(scene.camera);
+  auto adaptive = sph::makeAdaptiveController(m, scene.params.levels, scene.adaptive, camera);
+  controller_ = adaptive.get();
   display_tan_half_ = sph::displayTanHalf(scene.adaptive, camera);
   display_aspect_ = static_cast<float>(sph::Projector(camera).aspect());
   // The perceptual meter is the bench's instrument, not the method's cost: it runs after the
