@@ -11,19 +11,25 @@ namespace sph {
 
 namespace {
 
-// The lattice sites of `level` in the scene's water region, along each axis.
-std::array<int, 3> latticeCells(const Scene& scene, const LevelProps& props, const FluidSolver& solver) {
-  const double spacing = std::cbrt(props.mass / scene.params.rest_density);
-  const double inset = solver.fillInset(spacing, props.radius);
+// The lattice a level fills the scene's water region with: its spacing, its inset from the
+// region's faces, and its sites along each axis.
+struct Lattice {
+  double spacing = 0.0;
+  double inset = 0.0;
   std::array<int, 3> cells{};
-  for (int a = 0; a < 3; ++a) {
-    const double room = scene.water.max[a] - scene.water.min[a] - 2.0 * inset;
-    cells[static_cast<std::size_t>(a)] = room < 0.0 ? 0 : static_cast<int>(std::floor(room / spacing)) + 1;
-  }
-  return cells;
-}
+  long sites() const { return static_cast<long>(cells[0]) * cells[1] * cells[2]; }
+};
 
-long siteCount(const std::array<int, 3>& cells) { return static_cast<long>(cells[0]) * cells[1] * cells[2]; }
+Lattice latticeOf(const Scene& scene, const LevelProps& props, const FluidSolver& solver) {
+  Lattice l;
+  l.spacing = std::cbrt(props.mass / scene.params.rest_density);
+  l.inset = solver.fillInset(l.spacing, props.radius);
+  for (int a = 0; a < 3; ++a) {
+    const double room = scene.water.max[a] - scene.water.min[a] - 2.0 * l.inset;
+    l.cells[static_cast<std::size_t>(a)] = room < 0.0 ? 0 : static_cast<int>(std::floor(room / l.spacing)) + 1;
+  }
+  return l;
+}
 
 }  // namespace
 
@@ -31,8 +37,7 @@ Level fillingLevel(const Scene& scene, Level wanted, const FluidSolver& solver) 
   const auto levels = scene.params.levelProps();
   for (int k = levelIndex(wanted); k >= 0; --k) {
     const Level level = asLevel(k);
-    if (siteCount(latticeCells(scene, levels[static_cast<std::size_t>(k)], solver)) >=
-        initialParticleCount(scene, level)) {
+    if (latticeOf(scene, levels[static_cast<std::size_t>(k)], solver).sites() >= initialParticleCount(scene, level)) {
       return level;
     }
   }
@@ -52,10 +57,11 @@ void fillWater(const Scene& scene, Level start_class, const FluidSolver& solver,
                                 " L0 particles when refined, more than the capacity of " +
                                 std::to_string(out.capacity()));
   }
-  const double spacing = std::cbrt(props.mass / scene.params.rest_density);
-  const double inset = solver.fillInset(spacing, props.radius);
-  const std::array<int, 3> cells = latticeCells(scene, props, solver);
-  const long capacity = siteCount(cells);
+  const Lattice lattice = latticeOf(scene, props, solver);
+  const double spacing = lattice.spacing;
+  const double inset = lattice.inset;
+  const std::array<int, 3>& cells = lattice.cells;
+  const long capacity = lattice.sites();
   if (capacity < count) {
     throw std::invalid_argument(scene.source + ": water region holds " + std::to_string(capacity) + " " +
                                 levelName(start_class) + " particles at spacing " + std::to_string(spacing) +
