@@ -1,8 +1,10 @@
 // sph_validate: the fluid presets against experiment and theory. The Martin & Moyce dam break
-// (scenes/validation/martin_moyce.json): the surge front Z against T for every preset and method,
-// as a table, a CSV and a PNG with the experiment's points; the hydrostatic tank
-// (scenes/validation/hydrostatic.json): density and pressure against depth after settling.
+// (scenes/validation/martin_moyce.json): the surge front Z and the residual column height against
+// T for every preset and method, as tables, CSVs and PNGs with the experiment's points; the
+// hydrostatic tank (scenes/validation/hydrostatic.json): density and pressure against depth after
+// settling.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -37,8 +39,12 @@ struct Options {
 struct FrontRun {
   std::string preset, method;
   bench::Column column;
-  std::vector<bench::FrontPoint> curve;
+  std::vector<bench::CurvePoint> curve;
   double error = 0.0, shifted_error = 0.0, shift = 0.0;
+  // The residual column's height over the same gauges' reading at release; its errors unshifted
+  // and with the front's shift (one start-up delay for both measurements).
+  std::vector<bench::CurvePoint> height;
+  double height_error = 0.0, height_shifted_error = 0.0;
 };
 
 constexpr double kGravity = 9.81;
@@ -54,6 +60,7 @@ FrontRun runSurgeFront(const sph::Scene& scene, const std::string& method, const
   out.method = label;
   const double rho0 = scene.params.rest_density;
   const double wall_x = scene.boundary.box.min.x();
+  double released_height = 0.0;  // the residual column's as the gauges read it at release
   bench::RunOptions options;
   options.threads = threads;
   options.gaze = gaze;
@@ -61,14 +68,21 @@ FrontRun runSurgeFront(const sph::Scene& scene, const std::string& method, const
     const double a = out.column.width;
     const double T = record.sim_time * std::sqrt(2.0 * kGravity / a);
     out.curve.push_back({T, (bench::surgeFrontX(sim.particles(), rho0) - wall_x) / a});
+    out.height.push_back({T, bench::residualHeight(sim.particles(), sim.scene(), sim.boxNow()) / released_height});
   };
   bench::SceneRun run(scene, method, options);
   out.column = bench::measureColumn(run.simulation().particles(), rho0, wall_x);
-  out.curve.push_back({0.0, (bench::surgeFrontX(run.simulation().particles(), rho0) - wall_x) / out.column.width});
+  const sph::ParticleSet& released = run.simulation().particles();
+  out.curve.push_back({0.0, (bench::surgeFrontX(released, rho0) - wall_x) / out.column.width});
+  released_height = bench::residualHeight(released, run.simulation().scene(), run.simulation().boxNow());
+  out.height.push_back({0.0, 1.0});
   while (!run.done()) run.stepFrame();
   const auto& mm = bench::martinMoyceN2();
-  out.error = bench::maxRelativeFrontError(out.curve, mm, kTMax, 0.0);
+  out.error = bench::maxRelativeError(out.curve, mm, kTMax, 0.0);
   out.shift = bench::bestStartupShift(out.curve, mm, kTMax, kMaxShift, out.shifted_error);
+  const auto& mm_height = bench::martinMoyceHeightN2();
+  out.height_error = bench::maxRelativeError(out.height, mm_height, kTMax, 0.0);
+  out.height_shifted_error = bench::maxRelativeError(out.height, mm_height, kTMax, out.shift);
   return out;
 }
 
@@ -78,55 +92,78 @@ std::string percent(double x) {
   return text;
 }
 
-void writeSurgeFront(const std::vector<FrontRun>& runs, const fs::path& dir) {
-  {
-    std::ofstream csv(dir / "surge_front.csv");
-    csv << "preset,method,T,Z\n";
-    for (const FrontRun& r : runs) {
-      for (const auto& p : r.curve) csv << r.preset << ',' << r.method << ',' << p.T << ',' << p.Z << '\n';
-    }
-  }
-  {
-    std::ofstream csv(dir / "martin_moyce_n2.csv");
-    csv << "T,Z\n";
-    for (const auto& p : bench::martinMoyceN2()) csv << p.T << ',' << p.Z << '\n';
-  }
-  std::ofstream md(dir / "surge_front.md");
-  md << "# Surge front against Martin & Moyce (1952), n^2 = 2\n\n"
-     << "Z = x_front / a against T = t sqrt(2 g / a); x_front is the 99.9th percentile of the particles' x plus "
-        "half a spacing. Error: the largest |Z - Z_exp| / Z_exp at the experiment's points with 0 < T <= 3; "
-        "'shifted': with the start-up shift in T (<= 0.2, the experiment's gate) that minimises it. "
-        "The column as released: its height (n^2 = 2 asks for 2 a), its mean compression and largest "
-        "density.\n\n"
-     << "| preset | method | a (m) | height / a | compression, mean | max rho / rho0 | max error | shift | max "
-        "error shifted |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
+// One curve of every run (`of`) as a CSV: preset, method, T and the value named `column`.
+void writeCurves(const std::vector<FrontRun>& runs, std::vector<bench::CurvePoint> FrontRun::*of,
+                 const std::string& column, const fs::path& file) {
+  std::ofstream csv(file);
+  csv << "preset,method,T," << column << '\n';
   for (const FrontRun& r : runs) {
-    char row[320];
-    char max_density[32] = "n/a";
-    if (std::isfinite(r.column.max_density))
-      std::snprintf(max_density, sizeof max_density, "%.3f", r.column.max_density);
-    std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f | %s | %s | %s | %.3f | %s |\n", r.preset.c_str(),
-                  r.method.c_str(), r.column.width, r.column.height / r.column.width,
-                  percent(r.column.mean_compression).c_str(), max_density, percent(r.error).c_str(), r.shift,
-                  percent(r.shifted_error).c_str());
-    md << row;
+    for (const auto& p : r.*of) csv << r.preset << ',' << r.method << ',' << p.T << ',' << p.value << '\n';
   }
-  md << "\n| T (experiment) | Z (experiment) |";
+}
+
+void writeExperiment(const std::vector<bench::CurvePoint>& points, const std::string& column, const fs::path& file) {
+  std::ofstream csv(file);
+  csv << "T," << column << '\n';
+  for (const auto& p : points) csv << p.T << ',' << p.value << '\n';
+}
+
+// The experiment's points beside every run's curve (`of`) at the same T.
+void writeCurveTable(std::ostream& md, const std::vector<bench::CurvePoint>& experiment,
+                     const std::vector<FrontRun>& runs, std::vector<bench::CurvePoint> FrontRun::*of,
+                     const std::string& name) {
+  md << "\n| T (experiment) | " << name << " (experiment) |";
   for (const FrontRun& r : runs) md << ' ' << r.preset << '/' << r.method << " |";
   md << "\n|---|---|";
   for (std::size_t k = 0; k < runs.size(); ++k) md << "---|";
   md << '\n';
-  for (const auto& e : bench::martinMoyceN2()) {
+  for (const auto& e : experiment) {
+    const bool simulated = std::any_of(runs.begin(), runs.end(),
+                                       [&](const FrontRun& r) { return std::isfinite(bench::curveAt(r.*of, e.T)); });
+    if (!simulated) continue;  // past every run's last frame
     char cell[64];
-    std::snprintf(cell, sizeof cell, "| %.2f | %.2f |", e.T, e.Z);
+    std::snprintf(cell, sizeof cell, "| %.2f | %.2f |", e.T, e.value);
     md << cell;
     for (const FrontRun& r : runs) {
-      std::snprintf(cell, sizeof cell, " %.2f |", bench::frontZAt(r.curve, e.T));
+      std::snprintf(cell, sizeof cell, " %.2f |", bench::curveAt(r.*of, e.T));
       md << cell;
     }
     md << '\n';
   }
+}
+
+void writeSurgeFront(const std::vector<FrontRun>& runs, const fs::path& dir) {
+  writeCurves(runs, &FrontRun::curve, "Z", dir / "surge_front.csv");
+  writeCurves(runs, &FrontRun::height, "height", dir / "residual_height.csv");
+  writeExperiment(bench::martinMoyceN2(), "Z", dir / "martin_moyce_n2.csv");
+  writeExperiment(bench::martinMoyceHeightN2(), "height", dir / "martin_moyce_height_n2.csv");
+  std::ofstream md(dir / "surge_front.md");
+  md << "# Surge front and residual column against Martin & Moyce (1952), n^2 = 2\n\n"
+     << "Z = x_front / a against T = t sqrt(2 g / a); x_front is the 99.9th percentile of the particles' x plus "
+        "half a spacing. Error: the largest |Z - Z_exp| / Z_exp at the experiment's points with 0 < T <= 3; "
+        "'shifted': with the start-up shift in T (<= 0.2, the experiment's gate) that minimises it. "
+        "The column as released: its height (n^2 = 2 asks for 2 a), its mean compression and largest "
+        "density. The residual column: the level gauges read at the back wall (rho0 / 2 of the "
+        "kernel-interpolated density) over their reading at release, against Martin & Moyce's h / (n^2 a); "
+        "its largest relative error at the experiment's points with 0 < T <= 3, unshifted and with the "
+        "front's shift.\n\n"
+     << "| preset | method | a (m) | height / a | compression, mean | max rho / rho0 | max error | shift | max "
+        "error shifted | residual height error | shifted |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const FrontRun& r : runs) {
+    char row[384];
+    char max_density[32] = "n/a";
+    if (std::isfinite(r.column.max_density))
+      std::snprintf(max_density, sizeof max_density, "%.3f", r.column.max_density);
+    std::snprintf(row, sizeof row, "| %s | %s | %.4f | %.3f | %s | %s | %s | %.3f | %s | %s | %s |\n", r.preset.c_str(),
+                  r.method.c_str(), r.column.width, r.column.height / r.column.width,
+                  percent(r.column.mean_compression).c_str(), max_density, percent(r.error).c_str(), r.shift,
+                  percent(r.shifted_error).c_str(), percent(r.height_error).c_str(),
+                  percent(r.height_shifted_error).c_str());
+    md << row;
+  }
+  writeCurveTable(md, bench::martinMoyceN2(), runs, &FrontRun::curve, "Z");
+  writeCurveTable(md, bench::martinMoyceHeightN2(), runs, &FrontRun::height, "height");
 }
 
 // The gauges' depth over the depth sum m / rho0 fills (water_level.h), or n/a.
@@ -162,17 +199,14 @@ void writeRestProfiles(const std::vector<std::pair<std::string, bench::RestProfi
   }
 }
 
-// A surge-front curve's gnuplot style: one colour per preset, one dash pattern per method, so
-// nine curves that nearly coincide can still be told apart.
-std::string curveStyle(const std::string& preset, const std::string& method) {
+// A curve's gnuplot style: one colour per preset, and the k-th run of a preset its own dash
+// pattern, so nine curves that nearly coincide can still be told apart.
+std::string curveStyle(const std::string& preset, std::size_t k) {
   std::string style;
   if (preset == "pbf") style += " lc rgb '#0072b2'";
   if (preset == "dfsph") style += " lc rgb '#d55e00'";
   if (preset == "thesis") style += " lc rgb '#808080'";
-  if (method == "surface") style += " dt 2";
-  if (method == "gaze") style += " dt 3";
-  if (method == "hybrid") style += " dt 4";
-  return style;
+  return style + " dt " + std::to_string(k % 5 + 1);
 }
 
 // PNGs through gnuplot (scripts/install_deps.sh installs it); skipped with a note when missing.
@@ -188,11 +222,22 @@ void plot(const std::vector<FrontRun>& runs, const std::vector<std::string>& pre
      << "set ylabel 'Z = x / a'\nset key left top\nset xrange [0:3.5]\n"
      << "plot '" << (dir / "martin_moyce_n2.csv").string()
      << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin \\& Moyce 1952'";
-  for (const FrontRun& r : runs) {
-    gp << ", '" << (dir / "surge_front.csv").string() << "' using ((strcol(1) eq '" << r.preset << "' && strcol(2) eq '"
-       << r.method << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, r.method) << " noenhanced title '"
-       << r.preset << " " << r.method << "'";
-  }
+  const auto runCurves = [&](const std::string& csv) {
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const FrontRun& r = runs[k];
+      const auto of_preset = std::count_if(runs.begin(), runs.begin() + static_cast<std::ptrdiff_t>(k),
+                                           [&](const FrontRun& o) { return o.preset == r.preset; });
+      gp << ", '" << (dir / csv).string() << "' using ((strcol(1) eq '" << r.preset << "' && strcol(2) eq '" << r.method
+         << "') ? $3 : NaN):4 with lines lw 2" << curveStyle(r.preset, static_cast<std::size_t>(of_preset))
+         << " title '" << r.preset << " " << r.method << "' noenhanced";
+    }
+  };
+  runCurves("surge_front.csv");
+  gp << "\nset output '" << (dir / "residual_height.png").string() << "'\n"
+     << "set title 'Residual column, Martin \\& Moyce n^2 = 2'\nset ylabel 'height / initial height'\n"
+     << "set key right top\nplot '" << (dir / "martin_moyce_height_n2.csv").string()
+     << "' using 1:2 every ::1 with points pt 7 ps 1.5 lc rgb 'black' title 'Martin \\& Moyce 1952'";
+  runCurves("residual_height.csv");
   gp << "\nset output '" << (dir / "hydrostatic.png").string() << "'\nset multiplot layout 1,2\n"
      << "set title 'Density against depth'\nset xlabel 'rho / rho0'\nset ylabel 'depth (m)'\nset yrange [*:*] reverse\n"
      << "set xrange [*:*]\nset key bottom left\nplot ";
@@ -262,10 +307,11 @@ int main(int argc, char** argv) {
           const FrontRun& r = fronts.back();
           std::fprintf(stderr,
                        "[martin_moyce %s/%s] released at %.3f a high, %s mean compression; max front error (T <= 3) "
-                       "%s, with a shift of %.3f: %s\n",
+                       "%s, with a shift of %.3f: %s; residual height error %s, shifted %s\n",
                        preset.c_str(), label.c_str(), r.column.height / r.column.width,
                        percent(r.column.mean_compression).c_str(), percent(r.error).c_str(), r.shift,
-                       percent(r.shifted_error).c_str());
+                       percent(r.shifted_error).c_str(), percent(r.height_error).c_str(),
+                       percent(r.height_shifted_error).c_str());
         }
       }
       const sph::Scene tank = scene::loadScene("hydrostatic", o.scene_dir, preset);

@@ -1,7 +1,8 @@
-// Validation against experiment and theory (sph_validate): the surge front of a dam break against
-// Martin & Moyce (1952, "An experimental study of the collapse of liquid columns on a rigid
-// horizontal plane", Phil. Trans. R. Soc. A 244), and the density and pressure of water at rest
-// against depth (rho0 everywhere for incompressible water, p = rho0 g depth).
+// Validation against experiment and theory (sph_validate): the surge front and the residual column
+// height of a dam break against Martin & Moyce (1952, "An experimental study of the collapse of
+// liquid columns on a rigid horizontal plane", Phil. Trans. R. Soc. A 244), and the density and
+// pressure of water at rest against depth (rho0 everywhere for incompressible water, p = rho0 g
+// depth).
 #pragma once
 
 #include <string>
@@ -12,14 +13,19 @@
 
 namespace bench {
 
-// One point of a surge-front curve: T = t sqrt(2 g / a), Z = x_front / a.
-struct FrontPoint {
+// One point of a dam-break curve against T = t sqrt(2 g / a): the surge front's Z = x_front / a,
+// or the residual column's height over its initial height.
+struct CurvePoint {
   double T = 0.0;
-  double Z = 0.0;
+  double value = 0.0;
 };
 
 // Martin & Moyce's measured front for n^2 = 2 (their figure for the square-based column), T <= 3.33.
-const std::vector<FrontPoint>& martinMoyceN2();
+const std::vector<CurvePoint>& martinMoyceN2();
+
+// Martin & Moyce's measured residual column height for n^2 = 2: h / (n^2 a) at the back wall
+// against T (for n^2 = 2 their tau = n t sqrt(g / a) is T).
+const std::vector<CurvePoint>& martinMoyceHeightN2();
 
 // The initial column as the particles fill it: the width a (from the wall at x = wall_x to the
 // edge of the particles' volumes, m / rho0 each), the height above y = 0, and how compressed the
@@ -37,17 +43,23 @@ Column measureColumn(const sph::ParticleSet& particles, double rest_density, dou
 // the leading particle's volume), so that a few spray particles ahead of the water do not count.
 double surgeFrontX(const sph::ParticleSet& particles, double rest_density);
 
-// Z of `curve` at T, linear between its points; its first Z before it, NaN beyond its end.
-double frontZAt(const std::vector<FrontPoint>& curve, double T);
+// The residual column's height above the floor (m): the level gauges read (water_level.h: the
+// highest point where the kernel-interpolated density reaches rho0 / 2, the particles' sizes all
+// alike) on three lines half an L0 spacing off the back wall, box.min.x(), at a quarter, half and
+// three quarters of the tank's depth, averaged.
+double residualHeight(const sph::ParticleSet& particles, const sph::Scene& scene, const sph::BoxState& box);
+
+// `curve`'s value at T, linear between its points; its first value before it, NaN beyond its end.
+double curveAt(const std::vector<CurvePoint>& curve, double T);
 
 // The simulated curve compared with the experiment at the experiment's T <= t_max: the largest
-// relative error |Z_sim(T + shift) - Z_exp| / Z_exp over those points, with the simulated curve
+// relative error |v_sim(T + shift) - v_exp| / v_exp over those points, with the simulated curve
 // interpolated linearly. `shift` delays the experiment (its gate took time to clear).
-double maxRelativeFrontError(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
-                             double t_max, double shift);
+double maxRelativeError(const std::vector<CurvePoint>& simulated, const std::vector<CurvePoint>& experiment,
+                        double t_max, double shift);
 
 // The shift in [0, max_shift] (steps of 0.001) with the smallest maximum error; `error` gets it.
-double bestStartupShift(const std::vector<FrontPoint>& simulated, const std::vector<FrontPoint>& experiment,
+double bestStartupShift(const std::vector<CurvePoint>& simulated, const std::vector<CurvePoint>& experiment,
                         double t_max, double max_shift, double& error);
 
 // Water at rest, binned by depth below its free surface.

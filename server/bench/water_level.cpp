@@ -167,6 +167,34 @@ double incompressibleDepth(double volume, const sph::Boundary& boundary, const s
   return 0.5 * (lo + hi);
 }
 
+double gaugeLevel(const sph::ParticleSet& p, const sph::Scene& scene, const sph::BoxState& box,
+                  const std::vector<std::pair<double, double>>& lines) {
+  if (p.empty() || lines.empty()) return 0.0;
+  double shortest = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    shortest = shortest == 0.0 ? p.support[i] : std::min(shortest, static_cast<double>(p.support[i]));
+  }
+  const Walls walls = wallsOf(scene, box);
+  const double rest_density = scene.params.rest_density;
+  const double floor = box.min.y();
+  std::vector<Candidate> near;
+  double level_sum = 0.0;
+  for (const auto& [x, z] : lines) {
+    near.clear();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double hx = p.position[i].x() - x;
+      const double hz = p.position[i].z() - z;
+      const double h_sq = hx * hx + hz * hz;
+      if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
+        near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::levelIndex(p.level[i])});
+      }
+    }
+    const Gauge gauge{x, z, &near, &walls, rest_density};
+    level_sum += levelOf(gauge, floor, shortest / 8.0, 0.5 * rest_density) - floor;
+  }
+  return level_sum / static_cast<double>(lines.size());
+}
+
 WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene, const sph::BoxState& box) {
   WaterLevel out;
   const double rest_density = scene.params.rest_density;

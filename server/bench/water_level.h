@@ -16,6 +16,9 @@
 // is the settled depth once the water is at rest.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "sph/boundary.h"
 #include "sph/particles.h"
 #include "sph/scene.h"
@@ -33,6 +36,12 @@ struct WaterLevel {
 // `box`: the container now (Boundary::stateAt); the obstacles are the scene boundary's spheres and
 // cylinders; the rest density and the classes' kernels are the scene's parameters'.
 WaterLevel measureWaterLevel(const sph::ParticleSet& particles, const sph::Scene& scene, const sph::BoxState& box);
+
+// The mean level above the floor of `box` (m) of gauges on the vertical lines through `lines`
+// ((x, z) pairs), each read as measureWaterLevel reads its own; a dry gauge counts 0. A line
+// should stand at least half an L0 spacing off every side wall and obstacle.
+double gaugeLevel(const sph::ParticleSet& particles, const sph::Scene& scene, const sph::BoxState& box,
+                  const std::vector<std::pair<double, double>>& lines);
 
 // The depth that `volume` (m^3) fills from the floor of `box`, less what the boundary's spheres and
 // floor-to-roof cylinders standing over that floor take up to that height; the box's height if it

@@ -1,37 +1,90 @@
 // sph_validate's measurements (bench/validation.h) on inputs whose answers are known: the
 // experiment's own curve has no error, a late curve is found late and a shift within the limit
-// repairs it, and a lattice with hydrostatic pressure gives rho0 g as its pressure slope.
+// repairs it, a lattice column reads its own height at the wall whatever its particles' level, and
+// a lattice with hydrostatic pressure gives rho0 g as its pressure slope.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "bench/validation.h"
+#include "sph/params.h"
 
 namespace {
 
 TEST(Validation, TheExperimentMatchesItself) {
   const auto& mm = bench::martinMoyceN2();
   ASSERT_EQ(mm.size(), 16u);
-  EXPECT_DOUBLE_EQ(bench::maxRelativeFrontError(mm, mm, 3.0, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(bench::maxRelativeError(mm, mm, 3.0, 0.0), 0.0);
 }
 
 TEST(Validation, ALateFrontIsLateAndAShiftRepairsIt) {
-  std::vector<bench::FrontPoint> late;
-  for (const auto& p : bench::martinMoyceN2()) late.push_back({p.T + 0.15, p.Z});
+  std::vector<bench::CurvePoint> late;
+  for (const auto& p : bench::martinMoyceN2()) late.push_back({p.T + 0.15, p.value});
   late.insert(late.begin(), {0.0, 1.0});
-  EXPECT_GT(bench::maxRelativeFrontError(late, bench::martinMoyceN2(), 3.0, 0.0), 0.05);
+  EXPECT_GT(bench::maxRelativeError(late, bench::martinMoyceN2(), 3.0, 0.0), 0.05);
   double error = 1.0;
   // The shift delays the experiment, not the simulation: a late simulation cannot be shifted back.
   bench::bestStartupShift(late, bench::martinMoyceN2(), 3.0, 0.2, error);
   EXPECT_GT(error, 0.05);
-  std::vector<bench::FrontPoint> early;
-  for (const auto& p : bench::martinMoyceN2()) early.push_back({std::max(0.0, p.T - 0.15), p.Z});
+  std::vector<bench::CurvePoint> early;
+  for (const auto& p : bench::martinMoyceN2()) early.push_back({std::max(0.0, p.T - 0.15), p.value});
   const double shift = bench::bestStartupShift(early, bench::martinMoyceN2(), 3.0, 0.2, error);
   EXPECT_NEAR(shift, 0.15, 0.0011);
   EXPECT_LT(error, 0.01);
   // A curve that stops before T = 3 cannot pass.
-  std::vector<bench::FrontPoint> short_run(bench::martinMoyceN2().begin(), bench::martinMoyceN2().begin() + 5);
-  EXPECT_TRUE(std::isinf(bench::maxRelativeFrontError(short_run, bench::martinMoyceN2(), 3.0, 0.0)));
+  std::vector<bench::CurvePoint> short_run(bench::martinMoyceN2().begin(), bench::martinMoyceN2().begin() + 5);
+  EXPECT_TRUE(std::isinf(bench::maxRelativeError(short_run, bench::martinMoyceN2(), 3.0, 0.0)));
+}
+
+TEST(Validation, TheResidualHeightIsMartinAndMoycesTableInT) {
+  const auto& mm = bench::martinMoyceHeightN2();
+  ASSERT_EQ(mm.size(), 18u);
+  EXPECT_DOUBLE_EQ(bench::maxRelativeError(mm, mm, 3.0, 0.0), 0.0);
+  EXPECT_EQ(mm.front().T, 0.0);
+  EXPECT_EQ(mm.front().value, 1.0);
+  for (std::size_t k = 1; k < mm.size(); ++k) {
+    EXPECT_GT(mm[k].T, mm[k - 1].T);
+    EXPECT_LT(mm[k].value, mm[k - 1].value);
+  }
+  // The table's tau = t sqrt(g / a) is T / sqrt(2): half the column is left at tau = 2.00.
+  EXPECT_NEAR(bench::curveAt(mm, 2.00 * std::sqrt(2.0)), 0.50, 1e-12);
+  // No faster than free fall: the top falls at most g t^2 / 2 = a T^2 / 4, a T^2 / 8 of 2 a.
+  for (const auto& p : mm) EXPECT_GE(p.value, 1.0 - p.T * p.T / 8.0 - 1e-9) << "T " << p.T;
+}
+
+// A column of `level` particles on a lattice at rest density against the wall x = 0: 10 spacings
+// of the finest level long, 8 deep (the tank's depth) and 30 high.
+double latticeColumnHeight(sph::Level level, double& column_height) {
+  sph::Scene scene;
+  EXPECT_TRUE(sph::presetByName("pbf", scene.params));
+  const double rho0 = scene.params.rest_density;
+  const double fine = std::cbrt(scene.params.mass_small / rho0);
+  const sph::LevelProps props = scene.params.levelProps()[sph::levelIndex(level)];
+  const double s = std::cbrt(props.mass / rho0);
+  scene.boundary.box.max = Eigen::Vector3d(1.0, 1.0, 8 * fine);
+  const int nx = static_cast<int>(std::lround(10 * fine / s));
+  const int nz = static_cast<int>(std::lround(8 * fine / s));
+  const int ny = static_cast<int>(std::lround(30 * fine / s));
+  sph::ParticleSet p(static_cast<std::size_t>(nx * ny * nz));
+  for (int y = 0; y < ny; ++y) {
+    for (int z = 0; z < nz; ++z) {
+      for (int x = 0; x < nx; ++x) {
+        p.add(sph::Vec3(static_cast<float>((x + 0.5) * s), static_cast<float>((y + 0.5) * s),
+                        static_cast<float>((z + 0.5) * 8 * fine / nz)),
+              sph::Vec3::Zero(), level, props);
+      }
+    }
+  }
+  column_height = ny * s;
+  return bench::residualHeight(p, scene, scene.boundary.stateAt(0.0));
+}
+
+TEST(Validation, TheResidualHeightIsALatticeColumnsTopAtEveryLevel) {
+  for (const sph::Level level : {sph::Level{0}, sph::Level{1}, sph::Level{3}}) {
+    double height = 0.0;
+    const double read = latticeColumnHeight(level, height);
+    EXPECT_NEAR(read, height, 0.01 * height) << "level " << sph::levelIndex(level);
+  }
 }
 
 TEST(Validation, FrontIgnoresAFewSprayParticles) {
