@@ -14,11 +14,6 @@ namespace sph {
 
 namespace {
 
-// The gaze point's water: the nearest particle whose disc covers the gaze point (what the eye
-// sees there), or where none does (the gaze between particles, or just off the water's edge) the
-// nearest within this eccentricity.
-constexpr float kFoveaDeg = 1.0f;
-
 // The finest level below `level` (the finest a merged particle may border) among particle i's
 // neighbours and theirs that lies within sqrt(reach2) of it, or `level` where none does.
 // `finest_near[k]`: the finest level among k and its neighbours, so only the neighbours with a
@@ -92,18 +87,26 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   scratch.depth.resize(n);
   scratch.finest_near.resize(n);
   const float last_fovea = scratch.fovea_depth;
-  // The threads' nearest, combined: under the gaze point, and within kFoveaDeg of it.
-  float fovea_under = std::numeric_limits<float>::infinity();
-  float fovea_near = std::numeric_limits<float>::infinity();
-  // This step's fovea water, once the threads have combined theirs (inf: none within kFoveaDeg).
-  const auto fovea_now = [&] { return std::isfinite(fovea_under) ? fovea_under : fovea_near; };
+  // The gaze point's water, the reference the perceptual budget measures against too: the nearest
+  // particle whose disc covers the gaze point (what the eye sees there), or where none does (the
+  // gaze between particles, or off the water) the least eccentric particle on the display, the
+  // nearer of equals (the water nearest the gaze point). The threads' combined, the same for any
+  // thread count.
+  const float inf = std::numeric_limits<float>::infinity();
+  float fovea_under = inf;
+  float least_e = inf, least_e_depth = inf;
+  const auto lessEccentric = [](float e, float depth, float than_e, float than_depth) {
+    return e < than_e || (e == than_e && depth < than_depth);
+  };
+  // This step's fovea water, once the threads have combined theirs (inf: no water on the display).
+  const auto fovea_now = [&] { return std::isfinite(fovea_under) ? fovea_under : least_e_depth; };
   int split_wanted = 0, merge_wanted = 0, still_coarse = 0;
   int held_by_eye = 0, held_by_grading = 0, held_by_thin = 0, held_waiting = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse, held_by_eye, held_by_grading, \
                                    held_by_thin, held_waiting)
   {
-    float nearest_under = std::numeric_limits<float>::infinity();
-    float nearest = std::numeric_limits<float>::infinity();
+    float nearest_under = inf;
+    float my_least_e = inf, my_least_e_depth = inf;
     const ThreadShare share = threadShare(n);
     // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
     // nearest water at the gaze point.
@@ -117,7 +120,6 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float d = scaled_n >= surface_threshold ? 0.0f : p.surface_hop[i];
       p.surface_distance[i] = d;
       scratch.depth[i] = depth;
-      const float inf = std::numeric_limits<float>::infinity();
       // The periphery gain spares the particle the gaze falls on (its disc covers the gaze point)
       // and those whose merge could cover it: a merged particle lands between its pair, at most
       // half a support from either, and is 2^(1/3) as wide. The governor coarsens the periphery,
@@ -129,16 +131,22 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // apart from the distance ratio, 0 behind the eye).
       scratch.allowed[i] = on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
       if (on_screen && e <= disc_deg) nearest_under = std::min(nearest_under, depth);
-      if (on_screen && e < kFoveaDeg) nearest = std::min(nearest, depth);
+      if (on_screen && lessEccentric(e, depth, my_least_e, my_least_e_depth)) {
+        my_least_e = e;
+        my_least_e_depth = depth;
+      }
     }
 #pragma omp critical(sph_fovea_depth)
     {
       fovea_under = std::min(fovea_under, nearest_under);
-      fovea_near = std::min(fovea_near, nearest);
+      if (lessEccentric(my_least_e, my_least_e_depth, least_e, least_e_depth)) {
+        least_e = my_least_e;
+        least_e_depth = my_least_e_depth;
+      }
     }
 #pragma omp barrier
     const float fovea = fovea_now();
-    // The water at the gaze point: this step's where the gaze falls on water, else the last
+    // The water at the gaze point: this step's where any water is on the display, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
     // The finest level within one neighbour hop (the particle itself included).
