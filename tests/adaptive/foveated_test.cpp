@@ -2,14 +2,15 @@
 // the incompressible solvers: mass exact by level through many level changes, the same result for
 // any thread count, levels that hold still under a still gaze, a rule or a merge request for
 // every particle finer than the coarsest level, neighbours within the grading step, the finest
-// level under the gaze on a spread sheet, and a new fovea at its levels within three frames of a
-// saccade.
+// level under the gaze on a spread sheet, a new fovea at its levels within three frames of a
+// saccade, and a surface distance settled before the first decision.
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -147,16 +148,54 @@ double interiorDensityError(const sph::ParticleSet& p, double rho0) {
   return interior > 0 ? error / interior : 0.0;
 }
 
+// The field the first foveated step reads where nothing has tracked it: each particle's
+// distance to the free surface along its neighbours, no shorter than the straight line to the
+// nearest surface particle and longer by less than a neighbour's reach; the hops as the solver's
+// pass leaves them.
+TEST(Foveated, ASettledSurfaceDistanceIsThePathToTheSurface) {
+  const sph::Scene scene = restingTank();
+  Rig rig = makeRig(scene, sph::Method::Regular);  // no adaptive step: nothing tracks the field
+  rig.sim->step();
+  sph::FoveatedScratch scratch;
+  const int sweeps = sph::settleSurfaceDistance(*rig.sim, scene.adaptive, scratch);
+  const sph::ParticleSet& p = rig.sim->particles();
+  std::vector<std::size_t> surface;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.surface_distance[i] == 0.0f) surface.push_back(i);
+  }
+  ASSERT_FALSE(surface.empty());
+  ASSERT_LT(surface.size(), p.size() / 2) << "most of a tank lies under its surface";
+  const float reach = p.support[0];
+  float deepest = 0.0f;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const float d = p.surface_distance[i];
+    ASSERT_TRUE(std::isfinite(d)) << "particle " << i;
+    if (d == 0.0f) continue;
+    float straight = std::numeric_limits<float>::infinity();
+    for (const std::size_t s : surface) straight = std::min(straight, (p.position[i] - p.position[s]).norm());
+    EXPECT_GE(d, straight * (1.0f - 1e-5f)) << "particle " << i;
+    EXPECT_LE(d, straight + reach) << "particle " << i;
+    EXPECT_FLOAT_EQ(p.surface_hop[i], d) << "particle " << i;
+    deepest = std::max(deepest, d);
+  }
+  std::printf("settled in %d sweeps: %zu surface particles of %zu, the deepest %.3f m under\n", sweeps, surface.size(),
+              p.size(), deepest);
+  EXPECT_GT(sweeps, 2);
+}
+
 // A resting tank under a still gaze: once its levels have settled around the fovea they stay
 // (no particle flickers between two levels) and the tank settles with its density. (Flickering
-// levels drive it at about 0.1 m/s.)
+// levels drive it at about 0.1 m/s.) Counted over the last 300 frames: a change stirs the water
+// near it, which may carry another particle across a level's edge, and such a burst as the water
+// settles can reach 34 changes in 100 frames; one flickering particle changes every frame or two,
+// 150-300 times in 300 frames.
 TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
   const sph::Scene scene = restingTank();
   Rig rig = foveatedRig(scene);
   int changes = 0;
   double rms_sum = 0.0;
-  constexpr int kFrames = 500;
-  constexpr int kLast = 100;
+  constexpr int kFrames = 700;
+  constexpr int kLast = 300;
   for (int s = 0; s < kFrames; ++s) {
     const Levels before = levelsOf(rig.sim->particles());
     rig.controller->setGaze(gazeAt(0.5, 0.55));
@@ -176,7 +215,7 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
       levels_present, changes, rms, kLast, density_error);
   EXPECT_GE(levels_present, 3);
   // An occasional change as the water settles; a flickering particle changes every frame or two.
-  EXPECT_LE(changes, 30) << "levels flicker under a still gaze";
+  EXPECT_LE(changes, 90) << "levels flicker under a still gaze";
   EXPECT_LT(rms, 0.05);
   EXPECT_LE(density_error, 0.01);
 }

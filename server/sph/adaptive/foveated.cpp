@@ -36,6 +36,47 @@ int finestWithin(const ParticleSet& p, const NeighborGrid& grid, const std::vect
 
 }  // namespace
 
+int settleSurfaceDistance(Simulation& sim, const AdaptiveConfig& config, FoveatedScratch& scratch) {
+  ParticleSet& p = sim.particles();
+  const std::size_t n = p.size();
+  const NeighborGrid& grid = sim.grid();
+  const auto surface_threshold = static_cast<float>(config.surface_normal_scale * sim.params().surfaceThreshold());
+  const auto large_support = static_cast<float>(sim.params().levelProps()[1].support);
+  const float far = std::numeric_limits<float>::infinity();
+  std::vector<float>& next = scratch.settled;
+  next.resize(n);
+  // The least d_j + |r_ij| over i's neighbours, from the current field.
+  const auto nearest = [&](std::size_t i) {
+    float hop = far;
+    for (const std::uint32_t j : grid.neighbors(i)) {
+      hop = std::min(hop, p.surface_distance[j] + (p.position[j] - p.position[i]).norm());
+    }
+    return hop;
+  };
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool surface = p.normal_length[i] * p.support[i] / large_support >= surface_threshold;
+    p.surface_distance[i] = surface ? 0.0f : far;
+  }
+  // Each sweep carries the distance one neighbour further; the field settles within as many
+  // sweeps as the deepest particle is hops from the surface.
+  int sweeps = 0;
+  bool changed = true;
+  while (changed && sweeps < static_cast<int>(n) + 1) {
+    changed = false;
+#pragma omp parallel for schedule(static) reduction(|| : changed)
+    for (std::size_t i = 0; i < n; ++i) {
+      next[i] = p.surface_distance[i] == 0.0f ? 0.0f : std::min(p.surface_distance[i], nearest(i));
+      changed = changed || next[i] != p.surface_distance[i];
+    }
+    std::copy_n(next.begin(), n, p.surface_distance.begin());
+    ++sweeps;
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) p.surface_hop[i] = nearest(i);
+  return sweeps;
+}
+
 double acuityRatio(const AdaptiveConfig& config, double e_deg) {
   return 1.0 + config.foveated_mar_slope * std::max(e_deg, 0.0) / config.foveated_mar_w0_deg;
 }

@@ -50,8 +50,18 @@ struct FoveatedScratch {
   std::vector<float> allowed;            // the width the eye allows, in finest particles at the gaze point
   std::vector<float> depth;              // view-space distance
   std::vector<std::int8_t> finest_near;  // the finest level among a particle and its neighbours
+  std::vector<float> settled;            // settleSurfaceDistance's next sweep
   float fovea_depth = 0.0f;              // the last step's, 0 before the first
 };
+
+// Where no step has advanced the surface distance field (the method's first step, or its first
+// after a method that does not track it), relaxes it to where the steps would settle it: d = 0 on
+// the free surface (as decideFoveated finds it), else the least d_j + |r_ij| over the neighbours
+// (Jacobi sweeps over the neighbour lists until none changes), and leaves each particle's
+// surface_hop as the solver's last pass would. Without it the first decision reads every
+// particle off the surface as deep (the field starts far) and keeps the water under a thin
+// surface layer coarse where the eye sees it. Returns the sweeps taken.
+int settleSurfaceDistance(Simulation& sim, const AdaptiveConfig& config, FoveatedScratch& scratch);
 
 // Decides for every particle (out[i]) and returns the counts. `gaze_x`, `gaze_y`: normalized screen
 // coordinates (origin top left). `splits_only`: no merges (a further split pass in the same step).

@@ -7,8 +7,9 @@ namespace sph {
 Level FoveatedRule::coarsest(int levels) const { return asLevel(std::clamp(levels, kMinLevels, kMaxLevels) - 1); }
 
 void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& changes, AdaptiveStats& stats) {
-  // The depth field (hidden water) advances every step; without a gaze the eye is taken to rest
-  // at the screen's centre.
+  // The depth field (hidden water) advances every step, from a settled start; without a gaze
+  // the eye is taken to rest at the screen's centre.
+  if (!sim.surfaceDistanceTracking()) settleSurfaceDistance(sim, in.config, scratch_);
   sim.setSurfaceDistanceTracking(true);
   const bool tracked = in.mode == GazeMode::Tracking || in.mode == GazeMode::Holding;
   const double gx = tracked ? in.gaze.x : 0.5;
