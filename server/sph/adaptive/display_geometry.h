@@ -43,4 +43,10 @@ inline float angleDeg(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
   return static_cast<float>(kDegreesPerRadian) * std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
+// A disc's diameter as the user sees it: the angle between the directions of its left and right
+// edges, degrees. Off the display's centre a disc looks narrower than the same disc at the centre.
+inline float discWidthDeg(float x, float y, float radius, float tan_half, float aspect) {
+  return angleDeg(screenDirection(x - radius, y, tan_half, aspect), screenDirection(x + radius, y, tan_half, aspect));
+}
+
 }  // namespace sph

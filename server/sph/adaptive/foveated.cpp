@@ -98,6 +98,13 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const float tan_half = displayTanHalf(config, camera);
   const Eigen::Vector3f gaze_dir =
       screenDirection(static_cast<float>(gaze_x), static_cast<float>(gaze_y), tan_half, aspect);
+  // How wide a small disc looks at the gaze point, degrees per viewport width: a particle's width
+  // is weighed as the user sees it, against a finest particle's at the gaze point (the perceptual
+  // budget's measure), not on the screen.
+  constexpr float kSmallDisc = 1e-3f;  // viewport widths
+  const float gaze_scale =
+      discWidthDeg(static_cast<float>(gaze_x), static_cast<float>(gaze_y), kSmallDisc, tan_half, aspect) /
+      (2.0f * kSmallDisc);
   const Eigen::Vector4f depth_row = -camera.view.row(2).cast<float>();  // view-space distance
   const auto q = static_cast<float>(config.foveated_quality);
   const auto mar_gain = static_cast<float>(config.foveated_mar_slope / config.foveated_mar_w0_deg);
@@ -168,9 +175,14 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float merge_reach = std::cbrt(2.0f) + 0.5f * p.support[i] / p.radius[i];
       const float disc_deg = discRadiusDeg(disc.radius, tan_half);
       const bool gazed_on = e <= disc_deg * merge_reach;
+      // The particle's disc looks this many times as wide as it would at the gaze point.
+      const float seen_scale = disc.radius > 0.0f ? discWidthDeg(disc.x, disc.y, disc.radius, tan_half, aspect) /
+                                                        (2.0f * disc.radius * gaze_scale)
+                                                  : 1.0f;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
       // apart from the distance ratio, 0 behind the eye).
-      scratch.allowed[i] = on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) : inf;
+      scratch.allowed[i] =
+          on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) / seen_scale : inf;
       if (on_screen && e <= disc_deg) nearest_under = std::min(nearest_under, depth);
       if (on_screen && lessEccentric(e, depth, my_least_e, my_least_e_depth)) {
         my_least_e = e;

@@ -13,12 +13,6 @@ namespace {
 constexpr std::uint32_t kNoOwner = std::numeric_limits<std::uint32_t>::max();
 constexpr double kArcminPerDegree = 60.0;
 
-// A disc's diameter as the user sees it: the angle between the directions of its left and right
-// edges, degrees.
-float discWidthDeg(float x, float y, float radius, float tan_half, float aspect) {
-  return angleDeg(screenDirection(x - radius, y, tan_half, aspect), screenDirection(x + radius, y, tan_half, aspect));
-}
-
 int cellOf(float u, int cells) {
   return std::clamp(static_cast<int>(std::floor(u * static_cast<float>(cells))), 0, cells - 1);
 }
