@@ -88,7 +88,7 @@ double maxRelativeError(const std::vector<CurvePoint>& simulated, const std::vec
                         double t_max, double shift) {
   double worst = 0.0;
   for (const CurvePoint& e : experiment) {
-    if (e.T > t_max || e.T == 0.0) continue;  // at T = 0, Z = 1 by definition
+    if (e.T > t_max || e.T == 0.0) continue;  // at T = 0 the value is 1 by definition
     const double z = curveAt(simulated, e.T - shift);
     if (!std::isfinite(z)) return std::numeric_limits<double>::infinity();
     worst = std::max(worst, std::abs(z - e.value) / e.value);

@@ -24,7 +24,7 @@ struct CurvePoint {
 const std::vector<CurvePoint>& martinMoyceN2();
 
 // Martin & Moyce's measured residual column height for n^2 = 2: h / (n^2 a) at the back wall
-// against T (for n^2 = 2 their tau = n t sqrt(g / a) is T).
+// against T (their table's time, tau = t sqrt(g / a), is T / sqrt(2)).
 const std::vector<CurvePoint>& martinMoyceHeightN2();
 
 // The initial column as the particles fill it: the width a (from the wall at x = wall_x to the
