@@ -34,9 +34,18 @@ TEST(BasinFovea, ANewFoveaIsAtTheFinestLevelWithinThreeFrames) {
   options.on_frame = [&](const sph::Simulation&, const bench::FrameRecord& r) { fovea_level.push_back(r.fovea_level); };
   bench::runScene(scene, "foveated", options);
   ASSERT_EQ(fovea_level.size(), static_cast<std::size_t>(jump_frame + 3));
-  std::printf("fovea level before the jump %d, in the three frames after: %d %d %d\n", fovea_level[jump_frame - 1],
-              fovea_level[jump_frame], fovea_level[jump_frame + 1], fovea_level[jump_frame + 2]);
-  EXPECT_EQ(fovea_level[jump_frame - 1], 0) << "the first fixation should have its fovea at L0";
+  std::printf("fovea level in the frame before the jump %d, in the three frames after: %d %d %d\n",
+              fovea_level[jump_frame - 1], fovea_level[jump_frame], fovea_level[jump_frame + 1],
+              fovea_level[jump_frame + 2]);
+  // The first fixation is at the column's top edge, where the gaze may fall just between or past
+  // the particles in a frame (-1: no visible disc covers it): over its last five frames it falls on
+  // water, and that water is L0.
+  int on_water = 0;
+  for (int f = jump_frame - 5; f < jump_frame; ++f) {
+    EXPECT_LE(fovea_level[f], 0) << "frame " << f << ": the first fixation's water should be at L0";
+    on_water += fovea_level[f] == 0;
+  }
+  EXPECT_GT(on_water, 0) << "the first fixation should fall on water";
   EXPECT_EQ(fovea_level.back(), 0) << "the new fovea should be at L0 three frames after the saccade";
 }
 
