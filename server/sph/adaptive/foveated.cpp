@@ -175,14 +175,17 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float merge_reach = std::cbrt(2.0f) + 0.5f * p.support[i] / p.radius[i];
       const float disc_deg = discRadiusDeg(disc.radius, tan_half);
       const bool gazed_on = e <= disc_deg * merge_reach;
-      // The particle's disc looks this many times as wide as it would at the gaze point.
-      const float seen_scale = disc.radius > 0.0f ? discWidthDeg(disc.x, disc.y, disc.radius, tan_half, aspect) /
-                                                        (2.0f * disc.radius * gaze_scale)
-                                                  : 1.0f;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
-      // apart from the distance ratio, 0 behind the eye).
-      scratch.allowed[i] =
-          on_screen ? q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) / seen_scale : inf;
+      // apart from the distance ratio, 0 behind the eye). Seen water's allowance is divided by how
+      // many times as wide its disc looks as it would at the gaze point.
+      float allowed = inf;
+      if (on_screen) {
+        const float seen_scale = disc.radius > 0.0f ? discWidthDeg(disc.x, disc.y, disc.radius, tan_half, aspect) /
+                                                          (2.0f * disc.radius * gaze_scale)
+                                                    : 1.0f;
+        allowed = q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) / seen_scale;
+      }
+      scratch.allowed[i] = allowed;
       if (on_screen && e <= disc_deg) nearest_under = std::min(nearest_under, depth);
       if (on_screen && lessEccentric(e, depth, my_least_e, my_least_e_depth)) {
         my_least_e = e;
