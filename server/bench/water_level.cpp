@@ -53,6 +53,16 @@ Walls wallsOf(const sph::Scene& scene, const sph::BoxState& box) {
   return walls;
 }
 
+// Adds particle i to a gauge's candidates at (x, z) where its support reaches the gauge's line.
+void addIfReaching(const sph::ParticleSet& p, std::size_t i, double x, double z, std::vector<Candidate>& near) {
+  const double hx = p.position[i].x() - x;
+  const double hz = p.position[i].z() - z;
+  const double h_sq = hx * hx + hz * hz;
+  if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
+    near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::levelIndex(p.level[i])});
+  }
+}
+
 // A gauge's vertical line at (x, z) and what it reads there.
 struct Gauge {
   double x = 0.0;
@@ -181,14 +191,7 @@ double gaugeLevel(const sph::ParticleSet& p, const sph::Scene& scene, const sph:
   double level_sum = 0.0;
   for (const auto& [x, z] : lines) {
     near.clear();
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const double hx = p.position[i].x() - x;
-      const double hz = p.position[i].z() - z;
-      const double h_sq = hx * hx + hz * hz;
-      if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-        near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::levelIndex(p.level[i])});
-      }
-    }
+    for (std::size_t i = 0; i < p.size(); ++i) addIfReaching(p, i, x, z, near);
     const Gauge gauge{x, z, &near, &walls, rest_density};
     level_sum += levelOf(gauge, floor, shortest / 8.0, 0.5 * rest_density) - floor;
   }
@@ -244,14 +247,8 @@ WaterLevel measureWaterLevel(const sph::ParticleSet& p, const sph::Scene& scene,
           const int cx = home % nx + ox;
           const int cz = home / nx + oz;
           if (cx < 0 || cz < 0 || cx >= nx || cz >= nz) continue;
-          for (std::size_t i : columns[static_cast<std::size_t>(cz) * nx + cx]) {
-            const double hx = p.position[i].x() - gauge.x;
-            const double hz = p.position[i].z() - gauge.z;
-            const double h_sq = hx * hx + hz * hz;
-            if (h_sq < static_cast<double>(p.support[i]) * p.support[i]) {
-              near.push_back({p.position[i].y(), h_sq, p.mass[i], sph::levelIndex(p.level[i])});
-            }
-          }
+          for (std::size_t i : columns[static_cast<std::size_t>(cz) * nx + cx])
+            addIfReaching(p, i, gauge.x, gauge.z, near);
         }
       }
       const double level = levelOf(gauge, floor, step, 0.5 * rest_density) - floor;
