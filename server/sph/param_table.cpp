@@ -118,7 +118,8 @@ std::vector<ParamSpec> adaptiveRows() {
       {"foveated_display_fov_deg", nullptr, "foveated", &A::foveated_display_fov_deg, 0, 179, false, false, "degrees",
        "how wide the display looks to the user; 0: the camera's own field of view"},
       {"foveated_hidden_depth", nullptr, "foveated", &A::foveated_hidden_depth, 0, 1e6, false, false, "finest spacings",
-       "water deeper than this under the free surface is hidden and may go coarsest"},
+       "water deeper than this under the free surface is hidden: it may take the coarsest level whose support its "
+       "depth covers"},
       {"foveated_coarsen_margin", nullptr, "foveated", &A::foveated_coarsen_margin, 1, 100, false, false, "",
        "coarsening waits until the eye allows this many times the next level's width (hysteresis)"},
       {"foveated_thin_fill", nullptr, "foveated", &A::foveated_thin_fill, 0, 1, false, false, "rho0",

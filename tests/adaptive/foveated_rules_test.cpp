@@ -13,6 +13,8 @@ namespace {
 const float kWidth[] = {1.0f, std::cbrt(2.0f), std::cbrt(4.0f), 2.0f};
 constexpr int kCoarsest = 3;
 constexpr float kMargin = 1.25f;
+// Their supports in metres: twice the width, L0 0.03 m across, so the coarsest's is 0.12 m.
+const float kSupport[] = {0.06f, 0.06f * std::cbrt(2.0f), 0.06f * std::cbrt(4.0f), 0.12f};
 
 TEST(FoveatedRules, AcuityTakesTheCoarsestLevelTheEyeAllowsAndWaitsForTheMarginToMerge) {
   EXPECT_EQ(sph::acuityBounds(1.0f, kWidth, kCoarsest, kMargin).target, 0);
@@ -27,20 +29,38 @@ TEST(FoveatedRules, AcuityTakesTheCoarsestLevelTheEyeAllowsAndWaitsForTheMarginT
 
 TEST(FoveatedRules, HiddenWaterMayGoCoarsestAndMergesPastTheMarginsDepth) {
   sph::LevelBounds b = sph::acuityBounds(1.0f, kWidth, kCoarsest, kMargin);
-  sph::hiddenRule(b, 0.10f, 0.12f, 1.0f, 0.5f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.10f, 0.12f, kSupport, 1.0f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.target, 0) << "not deep enough";
-  sph::hiddenRule(b, 0.13f, 0.12f, 1.0f, 0.5f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.13f, 0.12f, kSupport, 1.0f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.target, kCoarsest);
   EXPECT_EQ(b.merge_upto, 0) << "0.13 < 0.12 x 1.25";
-  sph::hiddenRule(b, 0.16f, 0.12f, 1.0f, 0.5f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.16f, 0.12f, kSupport, 1.0f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.merge_upto, kCoarsest);
+}
+
+TEST(FoveatedRules, HiddenWaterTakesTheCoarsestLevelWhoseSupportItsDepthCovers) {
+  // Six levels: L4's support is 0.151 m, L5's 0.190 m, deeper than the hidden depth.
+  const float support[] = {0.06f, 0.0756f, 0.0952f, 0.12f, 0.151f, 0.190f};
+  constexpr int kSixLevels = 5;
+  sph::LevelBounds b = sph::acuityBounds(1.0f, kWidth, kCoarsest, kMargin);
+  sph::hiddenRule(b, 0.13f, 0.12f, support, 1.0f, 0.5f, kMargin, kSixLevels);
+  EXPECT_EQ(b.target, 3) << "L4's support would reach the surface";
+  sph::hiddenRule(b, 0.16f, 0.12f, support, 1.0f, 0.5f, kMargin, kSixLevels);
+  EXPECT_EQ(b.target, 4);
+  EXPECT_EQ(b.merge_upto, 3) << "0.16 < 0.151 x 1.25: merges make L3 at most";
+  sph::hiddenRule(b, 0.3f, 0.12f, support, 1.0f, 0.5f, kMargin, kSixLevels);
+  EXPECT_EQ(b.target, kSixLevels);
+  EXPECT_EQ(b.merge_upto, kSixLevels);
+  sph::LevelBounds eye{kSixLevels, kSixLevels, kSixLevels};
+  sph::hiddenRule(eye, 0.13f, 0.12f, support, 1.0f, 0.5f, kMargin, kSixLevels);
+  EXPECT_EQ(eye.target, kSixLevels) << "the depth never makes water finer than the eye asks";
 }
 
 TEST(FoveatedRules, ALayerIsNeverHidden) {
   sph::LevelBounds b = sph::acuityBounds(1.0f, kWidth, kCoarsest, kMargin);
-  sph::hiddenRule(b, 0.5f, 0.12f, 0.3f, 0.5f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.5f, 0.12f, kSupport, 0.3f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.target, 0) << "a sheet as deep as it is wide is still a sheet";
-  sph::hiddenRule(b, 0.5f, 0.12f, 0.55f, 0.5f, kMargin, kCoarsest);
+  sph::hiddenRule(b, 0.5f, 0.12f, kSupport, 0.55f, 0.5f, kMargin, kCoarsest);
   EXPECT_EQ(b.target, kCoarsest);
   EXPECT_EQ(b.merge_upto, 0) << "0.55 < 0.5 x 1.25: no merge yet";
 }

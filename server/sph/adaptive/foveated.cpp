@@ -111,6 +111,8 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const auto periphery_gain = static_cast<float>(config.foveated_periphery_gain);
   const auto finest_spacing = static_cast<float>(std::cbrt(levels[0].mass / sim.params().rest_density));
   const float hidden_depth = static_cast<float>(config.foveated_hidden_depth) * finest_spacing;
+  float support[kMaxLevels];
+  for (int k = 0; k < kMaxLevels; ++k) support[k] = static_cast<float>(levels[k].support);
   const auto least_spread = static_cast<float>(config.foveated_shallow_spread);
   const auto hold_frames =
       static_cast<int>(std::min(std::ceil(config.foveated_merge_hold_s / sim.params().time_step - 1e-9), 65535.0));
@@ -240,7 +242,8 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       };
       LevelBounds bounds = acuityBounds(allowed, width, coarsest, margin);
       if (p.surface_distance[i] >= hidden_depth) {
-        hiddenRule(bounds, p.surface_distance[i], hidden_depth, spreadOfNeighbours(), least_spread, margin, coarsest);
+        hiddenRule(bounds, p.surface_distance[i], hidden_depth, support, spreadOfNeighbours(), least_spread, margin,
+                   coarsest);
       }
       const int eye_level = bounds.target;  // what the eye needs, for the further split passes
       const int merge_by_eye = bounds.merge_upto;

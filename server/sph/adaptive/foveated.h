@@ -9,8 +9,10 @@
 //            coarsest whose width, seen from its distance, stays within that. Eccentricity e is
 //            the angle between the gaze and the particle as the user sees the display (its size
 //            in the visual field is a setting), not as the camera renders it.
-//   hidden   water deeper under the free surface than a few finest spacings may be coarsest,
-//            unless its neighbours lie nearly in one layer (a sheet the surface test misses).
+//   hidden   water deeper under the free surface than a few finest spacings may take the
+//            coarsest level whose support its depth covers (its kernel then reads deep water's
+//            density), unless its neighbours lie nearly in one layer (a sheet the surface test
+//            misses).
 //   thin     a particle with a thin neighbourhood (a sheet, a jet, a drop, the front's tip) stays
 //            at most at the thin level, so thin water keeps particles across it.
 //   shallow  a particle whose neighbours lie nearly in one layer (water spread on the floor

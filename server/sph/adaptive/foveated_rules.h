@@ -27,16 +27,26 @@ inline LevelBounds acuityBounds(float allowed, const float* width, int coarsest,
   return {acuity, with_margin, with_margin};
 }
 
-// hidden: water at least `hidden_depth` under the free surface may be coarsest; merging there
-// needs `margin` times that depth. Not water whose neighbours spread as a layer (`spread` below
+// hidden: water at least `hidden_depth` under the free surface may take the coarsest level whose
+// support (`support[k]`, in the depth's unit) its depth covers: that particle's kernel does not
+// reach the surface, so it reads its density as deep water does and holds its volume, where a
+// coarser one's would read the surface's missing half as a low density. Merging there needs
+// `margin` times those depths. Not water whose neighbours spread as a layer (`spread` below
 // `least_spread`, as the shallow rule reads it, and `margin` times it for a merge): a sheet
 // thinner than the support has no particle the free-surface test finds (its faces' colour-field
 // gradients cancel), so the surface distance reads it as deep as it is wide.
-inline void hiddenRule(LevelBounds& b, float depth_below_surface, float hidden_depth, float spread, float least_spread,
-                       float margin, int coarsest) {
-  if (depth_below_surface >= hidden_depth && spread >= least_spread) b.target = coarsest;
+inline void hiddenRule(LevelBounds& b, float depth_below_surface, float hidden_depth, const float* support,
+                       float spread, float least_spread, float margin, int coarsest) {
+  const auto covered = [&](float depth) {
+    int k = coarsest;
+    while (k > 0 && support[k] > depth) --k;
+    return k;
+  };
+  if (depth_below_surface >= hidden_depth && spread >= least_spread) {
+    b.target = std::max(b.target, covered(depth_below_surface));
+  }
   if (depth_below_surface >= hidden_depth * margin && spread >= least_spread * margin) {
-    b.merge_upto = b.eye_margin = coarsest;
+    b.merge_upto = b.eye_margin = std::max(b.merge_upto, covered(depth_below_surface / margin));
   }
 }
 

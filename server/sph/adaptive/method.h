@@ -78,7 +78,8 @@ struct AdaptiveConfig {
   // 30-50 while the camera renders 72; in a headset the two agree (0: the camera's own).
   double foveated_display_fov_deg = 40.0;
   // Water deeper than this many finest lattice spacings under the free surface is hidden by the
-  // water above it and may take the coarsest level at any eccentricity.
+  // water above it and may take, at any eccentricity, the coarsest level whose support its depth
+  // covers.
   double foveated_hidden_depth = 4.0;
   // Coarsening waits until the eye would allow a particle this many times the next level's
   // width (hysteresis: a particle on a level's edge does not flicker between two levels).
