@@ -13,7 +13,8 @@ namespace {
 const float kWidth[] = {1.0f, std::cbrt(2.0f), std::cbrt(4.0f), 2.0f};
 constexpr int kCoarsest = 3;
 constexpr float kMargin = 1.25f;
-// Their supports in metres: twice the width, L0 0.03 m across, so the coarsest's is 0.12 m.
+// Their supports in metres, each 2^(1/3) the one below's: the coarsest's is the hidden depth the
+// tests use, 0.12 m.
 const float kSupport[] = {0.06f, 0.06f * std::cbrt(2.0f), 0.06f * std::cbrt(4.0f), 0.12f};
 
 TEST(FoveatedRules, AcuityTakesTheCoarsestLevelTheEyeAllowsAndWaitsForTheMarginToMerge) {
