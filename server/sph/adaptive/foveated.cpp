@@ -34,7 +34,80 @@ int finestWithin(const ParticleSet& p, const NeighborGrid& grid, const std::vect
   return finest;
 }
 
+// Where the eye sees particles on the display: their disc, eccentricity and distance.
+struct EyeView {
+  Projector projector;
+  float aspect, tan_half;
+  Eigen::Vector3f gaze_dir;
+  Eigen::Vector4f depth_row;  // view-space distance
+  EyeView(const ScreenCamera& camera, double gaze_x, double gaze_y, const AdaptiveConfig& config)
+      : projector(camera),
+        aspect(static_cast<float>(projector.aspect())),
+        tan_half(displayTanHalf(config, camera)),
+        gaze_dir(screenDirection(static_cast<float>(gaze_x), static_cast<float>(gaze_y), tan_half, aspect)),
+        depth_row(-camera.view.row(2).cast<float>()) {}
+
+  struct Seen {
+    FastScreenDisc disc;
+    bool on_screen;  // in front of the eye, its centre on the display
+    float e;         // eccentricity, degrees (180 behind the eye)
+    float disc_deg;  // the disc's angular radius
+    float depth;
+  };
+  Seen see(const Vec3& x, float radius) const {
+    Seen s;
+    s.disc = projector.projectFast(x, radius);
+    s.on_screen = s.disc.in_front && s.disc.x >= 0.0f && s.disc.x <= 1.0f && s.disc.y >= 0.0f && s.disc.y <= 1.0f;
+    s.e = s.disc.in_front ? angleDeg(gaze_dir, screenDirection(s.disc.x, s.disc.y, tan_half, aspect)) : 180.0f;
+    s.disc_deg = discRadiusDeg(s.disc.radius, tan_half);
+    s.depth = depth_row.head<3>().dot(x) + depth_row.w();
+    return s;
+  }
+};
+
 }  // namespace
+
+FoveaWater::FoveaWater()
+    : under(std::numeric_limits<float>::infinity()),
+      least_e(std::numeric_limits<float>::infinity()),
+      least_e_depth(std::numeric_limits<float>::infinity()) {}
+
+void FoveaWater::consider(float e_deg, float disc_deg, float depth) {
+  if (e_deg <= disc_deg) under = std::min(under, depth);
+  if (e_deg < least_e || (e_deg == least_e && depth < least_e_depth)) {
+    least_e = e_deg;
+    least_e_depth = depth;
+  }
+}
+
+void FoveaWater::combine(const FoveaWater& other) {
+  under = std::min(under, other.under);
+  if (other.least_e < least_e || (other.least_e == least_e && other.least_e_depth < least_e_depth)) {
+    least_e = other.least_e;
+    least_e_depth = other.least_e_depth;
+  }
+}
+
+float FoveaWater::depth() const { return std::isfinite(under) ? under : least_e_depth; }
+
+float foveaWaterDepth(const ParticleSet& p, const ScreenCamera& camera, double gaze_x, double gaze_y,
+                      const AdaptiveConfig& config) {
+  const EyeView eye(camera, gaze_x, gaze_y, config);
+  const std::size_t n = p.size();
+  FoveaWater water;
+#pragma omp parallel
+  {
+    FoveaWater mine;
+    const ThreadShare share = threadShare(n);
+    for (std::size_t i = share.begin; i < share.end; ++i) {
+      const EyeView::Seen seen = eye.see(p.position[i], p.radius[i]);
+      if (seen.on_screen) mine.consider(seen.e, seen.disc_deg, seen.depth);
+    }
+#pragma omp critical(sph_fovea_water)
+    water.combine(mine);
+  }
+  return water.depth();
+}
 
 int settleSurfaceDistance(Simulation& sim, const AdaptiveConfig& config, FoveatedScratch& scratch) {
   ParticleSet& p = sim.particles();
@@ -93,11 +166,9 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   float width[kMaxLevels];
   for (int k = 0; k < kMaxLevels; ++k) width[k] = static_cast<float>(levels[k].radius / levels[0].radius);
   const auto rest_density = static_cast<float>(sim.params().rest_density);
-  const Projector projector(camera);
-  const float aspect = static_cast<float>(projector.aspect());
-  const float tan_half = displayTanHalf(config, camera);
-  const Eigen::Vector3f gaze_dir =
-      screenDirection(static_cast<float>(gaze_x), static_cast<float>(gaze_y), tan_half, aspect);
+  const EyeView eye(camera, gaze_x, gaze_y, config);
+  const float aspect = eye.aspect;
+  const float tan_half = eye.tan_half;
   // How wide a small disc looks at the gaze point, degrees per viewport width: a particle's width
   // is weighed as the user sees it, against a finest particle's at the gaze point (the perceptual
   // budget's measure), not on the screen.
@@ -105,7 +176,6 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   const float gaze_scale =
       discWidthDeg(static_cast<float>(gaze_x), static_cast<float>(gaze_y), kSmallDisc, tan_half, aspect) /
       (2.0f * kSmallDisc);
-  const Eigen::Vector4f depth_row = -camera.view.row(2).cast<float>();  // view-space distance
   const auto q = static_cast<float>(config.foveated_quality);
   const auto mar_gain = static_cast<float>(config.foveated_mar_slope / config.foveated_mar_w0_deg);
   const auto periphery_gain = static_cast<float>(config.foveated_periphery_gain);
@@ -137,35 +207,24 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   scratch.depth.resize(n);
   scratch.finest_near.resize(n);
   const float last_fovea = scratch.fovea_depth;
-  // The gaze point's water, the reference the perceptual budget measures against too: the nearest
-  // particle whose disc covers the gaze point (what the eye sees there), or where none does (the
-  // gaze between particles, or off the water) the least eccentric particle on the display, the
-  // nearer of equals (the water nearest the gaze point). The threads' combined, the same for any
-  // thread count.
+  // The gaze point's water (FoveaWater), the threads' combined.
   const float inf = std::numeric_limits<float>::infinity();
-  float fovea_under = inf;
-  float least_e = inf, least_e_depth = inf;
-  const auto lessEccentric = [](float e, float depth, float than_e, float than_depth) {
-    return e < than_e || (e == than_e && depth < than_depth);
-  };
-  // This step's fovea water, once the threads have combined theirs (inf: no water on the display).
-  const auto fovea_now = [&] { return std::isfinite(fovea_under) ? fovea_under : least_e_depth; };
+  FoveaWater fovea_water;
   int split_wanted = 0, merge_wanted = 0, still_coarse = 0;
   int held_by_eye = 0, held_by_grading = 0, held_by_thin = 0, held_waiting = 0;
 #pragma omp parallel reduction(+ : split_wanted, merge_wanted, still_coarse, held_by_eye, held_by_grading, \
                                    held_by_thin, held_waiting)
   {
-    float nearest_under = inf;
-    float my_least_e = inf, my_least_e_depth = inf;
+    FoveaWater my_fovea_water;
     const ThreadShare share = threadShare(n);
     // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
     // nearest water at the gaze point.
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      const Vec3 x = p.position[i];
-      const FastScreenDisc disc = projector.projectFast(x, p.radius[i]);
-      const float depth = depth_row.head<3>().dot(x) + depth_row.w();
-      const bool on_screen = disc.in_front && disc.x >= 0.0f && disc.x <= 1.0f && disc.y >= 0.0f && disc.y <= 1.0f;
-      const float e = disc.in_front ? angleDeg(gaze_dir, screenDirection(disc.x, disc.y, tan_half, aspect)) : 180.0f;
+      const EyeView::Seen seen = eye.see(p.position[i], p.radius[i]);
+      const FastScreenDisc& disc = seen.disc;
+      const float depth = seen.depth;
+      const bool on_screen = seen.on_screen;
+      const float e = seen.e;
       const float scaled_n = p.normal_length[i] * p.support[i] / large_support;
       const float d = scaled_n >= surface_threshold ? 0.0f : p.surface_hop[i];
       p.surface_distance[i] = d;
@@ -175,7 +234,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // half a support from either, and is 2^(1/3) as wide. The governor coarsens the periphery,
       // never the gaze point.
       const float merge_reach = std::cbrt(2.0f) + 0.5f * p.support[i] / p.radius[i];
-      const float disc_deg = discRadiusDeg(disc.radius, tan_half);
+      const float disc_deg = seen.disc_deg;
       const bool gazed_on = e <= disc_deg * merge_reach;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
       // apart from the distance ratio, 0 behind the eye). Seen water's allowance is divided by how
@@ -188,22 +247,12 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         allowed = q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) / seen_scale;
       }
       scratch.allowed[i] = allowed;
-      if (on_screen && e <= disc_deg) nearest_under = std::min(nearest_under, depth);
-      if (on_screen && lessEccentric(e, depth, my_least_e, my_least_e_depth)) {
-        my_least_e = e;
-        my_least_e_depth = depth;
-      }
+      if (on_screen) my_fovea_water.consider(e, disc_deg, depth);
     }
 #pragma omp critical(sph_fovea_depth)
-    {
-      fovea_under = std::min(fovea_under, nearest_under);
-      if (lessEccentric(my_least_e, my_least_e_depth, least_e, least_e_depth)) {
-        least_e = my_least_e;
-        least_e_depth = my_least_e_depth;
-      }
-    }
+    fovea_water.combine(my_fovea_water);
 #pragma omp barrier
-    const float fovea = fovea_now();
+    const float fovea = fovea_water.depth();
     // The water at the gaze point: this step's where any water is on the display, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
@@ -295,7 +344,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       merge_wanted += decision == kMerge;
     }
   }
-  const float fovea = fovea_now();
+  const float fovea = fovea_water.depth();
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
   view.still_coarse = still_coarse;
   if (!splits_only) view.held = {held_by_eye, held_by_grading, held_by_thin, held_waiting};

@@ -47,6 +47,26 @@ struct FoveatedView {
   HeldFiner held;            // counted by a step's first decision
 };
 
+// The water at the gaze point, the reference the perceptual budget measures against too: the
+// nearest particle on the display whose disc covers the gaze point (what the eye sees there), or
+// where none does (the gaze between particles, or off the water) the least eccentric particle on
+// the display, the nearer of equals (the water nearest the gaze point). Gathered particle by
+// particle and combined across threads: the same for any thread count.
+struct FoveaWater {
+  float under;          // distance of the nearest particle covering the gaze point, inf: none
+  float least_e;        // the least eccentricity on the display, degrees
+  float least_e_depth;  // that particle's distance
+  FoveaWater();
+  // An on-display particle seen `e_deg` from the gaze, its disc `disc_deg` in angular radius.
+  void consider(float e_deg, float disc_deg, float depth);
+  void combine(const FoveaWater& other);
+  float depth() const;  // inf: no water on the display
+};
+
+// The water at the gaze point as the particles stand (FoveaWater::depth).
+float foveaWaterDepth(const ParticleSet& p, const ScreenCamera& camera, double gaze_x, double gaze_y,
+                      const AdaptiveConfig& config);
+
 // Per-particle scratch of the decision, kept between steps so the step does not allocate.
 struct FoveatedScratch {
   std::vector<float> allowed;            // the width the eye allows, in finest particles at the gaze point
