@@ -44,6 +44,18 @@ TEST(PerceptualBudget, AParticleBehindAnotherIsNotSeen) {
   EXPECT_EQ(b.gaze_level, 1);
 }
 
+// A far particle narrower than a depth-grid cell covers the gaze point but no cell's centre, and a
+// nearer one beside it owns the cell of its centre: the grid samples nothing of it, yet it is what
+// the eye sees at the gaze point.
+TEST(PerceptualBudget, AParticleNarrowerThanACellUnderTheGazeIsSeen) {
+  Rig rig;
+  rig.add({0, 0, -20}, 1);  // on the line of sight, 0.05 degrees in radius: a cell is 0.23 wide
+  rig.add({2.0f * std::tan(0.45f * static_cast<float>(M_PI) / 180.0f), 0, -2}, 0);  // 0.45 degrees off
+  const sph::PerceptualBudget b = rig.measure();
+  EXPECT_EQ(b.gaze_level, 1);
+  EXPECT_EQ(b.visible, 2);
+}
+
 TEST(PerceptualBudget, TheGazeParticleIsMeasuredInArcminutes) {
   Rig rig;
   rig.add({0, 0, -2}, 0);

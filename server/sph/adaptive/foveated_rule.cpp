@@ -1,6 +1,7 @@
 #include "sph/adaptive/foveated_rule.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sph {
 
@@ -30,13 +31,25 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
   // rather than a level a frame later. Water the eye does not see (hidden, off the display) and
   // the rules that do not come from the eye (thin, shallow, graded) split a level a step: a
   // further pass costs a neighbour search and a decision over all the water.
-  for (int pass = 2; pass < in.levels && view.still_coarse > 0; ++pass) {
+  // The decision sized the step to the water at the gaze point as it found it; its own changes
+  // can leave farther water there (the particle under the gaze split, its children off the gaze
+  // point), from which the eye allows every particle less: a further pass then sizes it again.
+  int changed = counts.splits + counts.merges;
+  const auto foveaMovedAway = [&] {
+    if (changed == 0) return false;
+    const float now = foveaWaterDepth(sim.particles(), in.camera, gx, gy, in.config);
+    return std::isfinite(now) && now > view.fovea_depth;
+  };
+  for (int pass = 2; pass <= in.levels; ++pass) {
+    const bool still_coarse = pass < in.levels && view.still_coarse > 0;
+    if (!still_coarse && !foveaMovedAway()) break;
     sim.rebuildNeighbors();
     const DecisionCounts more = decideFoveated(sim, in.camera, gx, gy, in.config, true,
                                                changes.decisions(sim.particles().size()), scratch_, view);
     stats.split_wanted += more.split_wanted;
     ++stats.split_passes;
-    stats.splits += changes.applySplits(sim);
+    changed = changes.applySplits(sim);
+    stats.splits += changed;
   }
 }
 

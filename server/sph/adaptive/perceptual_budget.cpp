@@ -13,6 +13,11 @@ namespace {
 constexpr std::uint32_t kNoOwner = std::numeric_limits<std::uint32_t>::max();
 constexpr double kArcminPerDegree = 60.0;
 
+// In front of the eye with its centre on the display.
+bool onDisplay(const FastScreenDisc& disc) {
+  return disc.in_front != 0 && disc.x >= 0.0f && disc.x <= 1.0f && disc.y >= 0.0f && disc.y <= 1.0f;
+}
+
 int cellOf(float u, int cells) {
   return std::clamp(static_cast<int>(std::floor(u * static_cast<float>(cells))), 0, cells - 1);
 }
@@ -39,7 +44,7 @@ PerceptualBudget PerceptualBudgetMeter::measure(const ParticleSet& p, const SimP
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3& x = p.position[i];
     const FastScreenDisc disc = projector.projectFast(x, p.radius[i]);
-    if (disc.in_front == 0 || disc.x < 0.0f || disc.x > 1.0f || disc.y < 0.0f || disc.y > 1.0f) continue;
+    if (!onDisplay(disc)) continue;
     const float depth =
         fast.depth_row[0] * x.x() + fast.depth_row[1] * x.y() + fast.depth_row[2] * x.z() + fast.depth_row[3];
     const float radius_y = disc.radius * aspect;  // in viewport heights
@@ -65,17 +70,19 @@ PerceptualBudget PerceptualBudgetMeter::measure(const ParticleSet& p, const SimP
     if (owner != kNoOwner) seen_[owner] = 1;
   }
 
-  // The particle under the gaze: of the visible ones whose disc covers the gaze point (as the
-  // user sees the display: discRadiusDeg), the nearest the eye (a tie keeps the lower index).
+  // The particle under the gaze: of those on the display whose disc covers the gaze point (as the
+  // user sees the display: discRadiusDeg), the nearest the eye (a tie keeps the lower index). It is
+  // what the eye sees there, so it is visible even where no cell's centre samples it (a disc
+  // narrower than a cell).
   const auto gx = static_cast<float>(gaze_x), gy = static_cast<float>(gaze_y);
   const float tan_half = displayTanHalf(config, camera);
   const Eigen::Vector3f gaze_dir = screenDirection(gx, gy, tan_half, aspect);
   std::size_t gazed = n;
   float gazed_depth = inf;
   for (std::size_t i = 0; i < n; ++i) {
-    if (seen_[i] == 0) continue;
     const Vec3& x = p.position[i];
     const FastScreenDisc disc = projector.projectFast(x, p.radius[i]);
+    if (!onDisplay(disc)) continue;
     const float e = angleDeg(gaze_dir, screenDirection(disc.x, disc.y, tan_half, aspect));
     const float depth =
         fast.depth_row[0] * x.x() + fast.depth_row[1] * x.y() + fast.depth_row[2] * x.z() + fast.depth_row[3];
@@ -84,6 +91,7 @@ PerceptualBudget PerceptualBudgetMeter::measure(const ParticleSet& p, const SimP
       gazed = i;
     }
   }
+  if (gazed != n) seen_[gazed] = 1;
   // The reference distance: the water under the gaze point, or (where the gaze falls on none) the
   // nearest water to it on the display.
   float reference_depth = gazed_depth;

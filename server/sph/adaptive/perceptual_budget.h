@@ -4,8 +4,8 @@
 // figures promise and what they do not.
 //
 //   visible    nearest to the eye in at least one cell of a depth grid over the display
-//              (kDepthGridWidth cells across), its centre on the display and in front of the eye;
-//              not the rule's own hidden-depth field.
+//              (kDepthGridWidth cells across), or under the gaze (below), its centre on the display
+//              and in front of the eye; not the rule's own hidden-depth field.
 //   width      the particle's diameter as the user sees it (the display foveated_display_fov_deg
 //              wide, or the camera's own field of view when that is 0), in arcmin, from the
 //              directions of the disc's two edges.
@@ -14,9 +14,10 @@
 //              gaze (Guenter et al. 2012: MAR(e) = w0 + m e), at periphery gain 1 whatever gain
 //              the governor has in force: the grain may grow with eccentricity as fast as the
 //              eye's acuity falls, and no faster, from what the gaze point gets.
-//   gaze       the particle nearest the eye in the cell under the gaze point: its width and the
-//              eye's MAR there, both in arcmin (0 where the gaze falls on no water). Their ratio
-//              says how much coarser than the eye's resolution the finest water is.
+//   gaze       of the particles whose disc covers the gaze point, the nearest the eye (what the
+//              eye sees there, visible even where no cell samples it): its width and the eye's MAR
+//              there, both in arcmin (0 where the gaze falls on no water). Their ratio says how
+//              much coarser than the eye's resolution the finest water is.
 #pragma once
 
 #include <cstdint>
