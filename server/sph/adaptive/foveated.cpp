@@ -229,13 +229,16 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float d = scaled_n >= surface_threshold ? 0.0f : p.surface_hop[i];
       p.surface_distance[i] = d;
       scratch.depth[i] = depth;
-      // The periphery gain spares the particle the gaze falls on (its disc covers the gaze point)
-      // and those whose merge could cover it: a merged particle lands between its pair, at most
-      // half a support from either, and is 2^(1/3) as wide. The governor coarsens the periphery,
+      // The particle the gaze falls on (its disc covers the gaze point) is seen at the gaze point,
+      // where the eye resolves MAR(0), however far off its centre lies: a particle wide on the
+      // display would otherwise cover it at the next level. The periphery gain spares it and
+      // those whose merge could cover it: a merged particle lands between its pair, at most half
+      // a support from either, and is 2^(1/3) as wide. The governor coarsens the periphery,
       // never the gaze point.
       const float merge_reach = std::cbrt(2.0f) + 0.5f * p.support[i] / p.radius[i];
       const float disc_deg = seen.disc_deg;
       const bool gazed_on = e <= disc_deg * merge_reach;
+      const float seen_e = e <= disc_deg ? 0.0f : e;
       // Water behind the eye or off the display is not seen: any level (inf, which pass 2 keeps
       // apart from the distance ratio, 0 behind the eye). Seen water's allowance is divided by how
       // many times as wide its disc looks as it would at the gaze point.
@@ -244,7 +247,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
         const float seen_scale = disc.radius > 0.0f ? discWidthDeg(disc.x, disc.y, disc.radius, tan_half, aspect) /
                                                           (2.0f * disc.radius * gaze_scale)
                                                     : 1.0f;
-        allowed = q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * e) / seen_scale;
+        allowed = q * (1.0f + (gazed_on ? 1.0f : periphery_gain) * mar_gain * seen_e) / seen_scale;
       }
       scratch.allowed[i] = allowed;
       if (on_screen) my_fovea_water.consider(e, disc_deg, depth);

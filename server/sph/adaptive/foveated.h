@@ -8,7 +8,8 @@
 //            particle at the gaze point (Guenter et al. 2012: MAR(e) = w0 + m e); its level is the
 //            coarsest whose width, seen from its distance, stays within that. Eccentricity e is
 //            the angle between the gaze and the particle as the user sees the display (its size
-//            in the visual field is a setting), not as the camera renders it.
+//            in the visual field is a setting), not as the camera renders it; 0 for the particle
+//            whose disc covers the gaze point.
 //   hidden   water deeper under the free surface than a few finest spacings may take the
 //            coarsest level whose support its depth covers (its kernel then reads deep water's
 //            density), unless its neighbours lie nearly in one layer (a sheet the surface test
