@@ -74,17 +74,18 @@ FoveaWater::FoveaWater()
 
 void FoveaWater::consider(float e_deg, float disc_deg, float depth) {
   if (e_deg <= disc_deg) under = std::min(under, depth);
-  if (e_deg < least_e || (e_deg == least_e && depth < least_e_depth)) {
-    least_e = e_deg;
-    least_e_depth = depth;
-  }
+  takeIfLessEccentric(e_deg, depth);
 }
 
 void FoveaWater::combine(const FoveaWater& other) {
   under = std::min(under, other.under);
-  if (other.least_e < least_e || (other.least_e == least_e && other.least_e_depth < least_e_depth)) {
-    least_e = other.least_e;
-    least_e_depth = other.least_e_depth;
+  takeIfLessEccentric(other.least_e, other.least_e_depth);
+}
+
+void FoveaWater::takeIfLessEccentric(float e_deg, float depth) {
+  if (e_deg < least_e || (e_deg == least_e && depth < least_e_depth)) {
+    least_e = e_deg;
+    least_e_depth = depth;
   }
 }
 

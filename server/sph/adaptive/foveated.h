@@ -62,6 +62,9 @@ struct FoveaWater {
   void consider(float e_deg, float disc_deg, float depth);
   void combine(const FoveaWater& other);
   float depth() const;  // inf: no water on the display
+
+ private:
+  void takeIfLessEccentric(float e_deg, float depth);  // the nearer of equals
 };
 
 // The water at the gaze point as the particles stand (FoveaWater::depth).
