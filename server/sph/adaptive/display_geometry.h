@@ -25,6 +25,12 @@ inline float displayTanHalf(const AdaptiveConfig& config, const ScreenCamera& ca
              : static_cast<float>(1.0 / camera.projection(0, 0));
 }
 
+// In front of the eye with its centre on the display: the water the foveated rule and the
+// perceptual budget both weigh.
+inline bool onDisplay(const FastScreenDisc& disc) {
+  return disc.in_front != 0 && disc.x >= 0.0f && disc.x <= 1.0f && disc.y >= 0.0f && disc.y <= 1.0f;
+}
+
 // The direction of screen point (sx, sy) from the eye, the display `tan_half` wide (tan of half
 // its horizontal angle) and `aspect` wide per high.
 inline Eigen::Vector3f screenDirection(float sx, float sy, float tan_half, float aspect) {

@@ -57,7 +57,7 @@ struct EyeView {
   Seen see(const Vec3& x, float radius) const {
     Seen s;
     s.disc = projector.projectFast(x, radius);
-    s.on_screen = s.disc.in_front && s.disc.x >= 0.0f && s.disc.x <= 1.0f && s.disc.y >= 0.0f && s.disc.y <= 1.0f;
+    s.on_screen = onDisplay(s.disc);
     s.e = s.disc.in_front ? angleDeg(gaze_dir, screenDirection(s.disc.x, s.disc.y, tan_half, aspect)) : 180.0f;
     s.disc_deg = discRadiusDeg(s.disc.radius, tan_half);
     s.depth = depth_row.head<3>().dot(x) + depth_row.w();

@@ -13,11 +13,6 @@ namespace {
 constexpr std::uint32_t kNoOwner = std::numeric_limits<std::uint32_t>::max();
 constexpr double kArcminPerDegree = 60.0;
 
-// In front of the eye with its centre on the display.
-bool onDisplay(const FastScreenDisc& disc) {
-  return disc.in_front != 0 && disc.x >= 0.0f && disc.x <= 1.0f && disc.y >= 0.0f && disc.y <= 1.0f;
-}
-
 int cellOf(float u, int cells) {
   return std::clamp(static_cast<int>(std::floor(u * static_cast<float>(cells))), 0, cells - 1);
 }
