@@ -94,6 +94,12 @@ BoundaryVolume::BoundaryVolume(const Boundary& boundary, const std::array<CubicK
     const double s = spacing[c];
     plane_[c] = tabulate(0.0, k.h, [&](double u) { return planeSum(k, s, u); });
     line_[c] = tabulate(0.0, k.h, [&](double rho) { return lineSum(k, s, rho); });
+    // A face's layers summed into one function of the distance: one lookup a face, not one a layer.
+    face_[c] = tabulate(0.0, k.h, [&](double d) {
+      double phi = 0.0;
+      for (double u = d + 0.5 * s; u < k.h; u += s) phi += s * planeSum(k, s, u);
+      return phi;
+    });
   }
   // An obstacle of radius R holds layers of the lattice as shells of radius R - (l + 1/2) s.
   // Sphere: a shell of radius q about the centre at distance D adds s q / D (A(|D - q|) - A(D + q))
@@ -156,7 +162,7 @@ void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int 
   // r_a = x_a - x_b = sign_a (d_a + (l + 1/2) s) from the particle (sign: +1 for a min face).
   const auto cu = static_cast<std::size_t>(c);
   const CubicKernel& k = kernels_[cu];
-  const Table& plane = plane_[cu];
+  const Table& face_volume = face_[cu];
   const Table& line = line_[cu];
   const float s = spacing_[cu];
   const int layers = static_cast<int>(std::ceil(k.h / s));
@@ -169,12 +175,10 @@ void BoundaryVolume::boxShare(const float distance[3], const float sign[3], int 
   const bool near2 = distance[2] + 0.5f * s < k.h;
   const auto offset = [&](float d, int l) { return d + (static_cast<float>(l) + 0.5f) * s; };
   const auto face = [&](float d, float& d_phi) {
-    for (int l = 0; l < layers; ++l) {
-      float v = 0.0f, dv = 0.0f;
-      plane.at(offset(d, l), v, dv);
-      phi += s * v;
-      d_phi += s * dv;
-    }
+    float v = 0.0f, dv = 0.0f;
+    face_volume.at(d, v, dv);
+    phi += v;
+    d_phi += dv;
   };
   const auto edge = [&](float da, float db, float& d_phi_a, float& d_phi_b) {
     for (int l = 0; l < layers; ++l) {

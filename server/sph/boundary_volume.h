@@ -55,7 +55,8 @@ class BoundaryVolume {
 
   std::array<CubicKernel, kMaxLevels> kernels_;
   std::array<float, kMaxLevels> spacing_{};
-  std::array<Table, kMaxLevels> plane_, line_;                      // A(u): a layer's integral; L(rho): a row's
+  std::array<Table, kMaxLevels> plane_, line_;  // A(u): a layer's integral; L(rho): a row's
+  std::array<Table, kMaxLevels> face_;          // a face's layers at distance d: s sum_l A(d + (l + 1/2) s)
   std::vector<std::array<Table, kMaxLevels>> spheres_, cylinders_;  // Phi(D) per obstacle
   std::vector<float> sphere_radius_, cylinder_radius_;
   std::vector<Eigen::Vector3f> sphere_centres_;
