@@ -1,6 +1,7 @@
 #include "sph/solvers/local_placement.h"
 
 #include <algorithm>
+#include <iterator>
 
 #include "sph/simd/simd_level.h"
 
@@ -91,7 +92,7 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
   for (auto* v : {&lambda_, &lambda_step_, &density_at_start_}) v->reserve(p.capacity());
   for (auto* v : {&next_position_, &wall_grad_}) v->reserve(p.capacity());
   lambda_.assign(n, 0.0f);
-  lambda_step_.resize(n);  // place() zeroes it before its first correction reads it
+  lambda_step_.assign(n, 0.0f);
   density_at_start_.assign(p.density.begin(), p.density.end());
   next_position_.resize(n);
   wall_grad_.resize(n);
@@ -99,14 +100,28 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
   const PbfPassForms forms = pbfPassForms();
   const std::span<const std::uint32_t> candidates = watched(p, placements, grid);
+  // The candidates' densities where they stand, and the multipliers the first iteration's pass
+  // would give them from zero: place() keeps those of the particles it updates.
   a.position = p.position.data()->data();
   a.only = candidates.data();
   a.only_count = candidates.size();
   forms.lambda(a, c, grid);
   a.only = nullptr;
   a.only_count = 0;
-  std::fill(lambda_.begin(), lambda_.end(), 0.0f);
   return place(p, grid, candidates, a, c, forms, limit, max_iterations, carried);
+}
+
+void LocalPlacement::surround(const NeighborGrid& grid, PbfArrays& a) {
+  // The last sets' multipliers stay as they are: only the new sets' change from here on.
+  for (std::uint32_t i : updated_) a.lambda_step[i] = 0.0f;
+  for (std::uint32_t i : moved_) mark_[i] = 0;
+  updated_.assign(placed_.begin(), placed_.end());
+  for (std::uint32_t i : placed_) mark_[i] = 1;
+  addNeighbourhoods(grid, placed_, mark_, updated_);
+  std::sort(updated_.begin(), updated_.end());
+  moved_.assign(updated_.begin(), updated_.end());
+  addNeighbourhoods(grid, updated_, mark_, moved_);
+  std::sort(moved_.begin(), moved_.end());
 }
 
 int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates,
@@ -115,31 +130,35 @@ int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<co
   const std::size_t n = p.size();
   const float rho0 = c.rest_density;
   const std::size_t room = p.capacity();
-  for (auto* v : {&placed_, &updated_, &moved_}) v->reserve(room);
+  for (auto* v : {&placed_, &updated_, &moved_, &unmeasured_}) v->reserve(room);
   mark_.reserve(room);
+  const auto overLimit = [&](std::uint32_t i) { return placementExcess(p, density_at_start_, rho0, i) > limit; };
   // The candidates compressed beyond the limit.
   placed_.clear();
   for (std::uint32_t i : candidates) {
-    if (placementExcess(p, density_at_start_, rho0, i) > limit) placed_.push_back(i);
+    if (overLimit(i)) placed_.push_back(i);
   }
   if (placed_.empty()) return 0;
-  // Updated: the placements and their neighbours; moved: those and theirs. Every other particle
-  // has a zero change of multiplier, so its correction would be zero.
   mark_.assign(n, 0);
-  updated_.assign(placed_.begin(), placed_.end());
-  for (std::uint32_t i : placed_) mark_[i] = 1;
-  addNeighbourhoods(grid, placed_, mark_, updated_);
-  std::sort(updated_.begin(), updated_.end());
-  moved_.assign(updated_.begin(), updated_.end());
-  addNeighbourhoods(grid, updated_, mark_, moved_);
-  std::sort(moved_.begin(), moved_.end());
-  std::fill_n(a.lambda_step, n, 0.0f);
+  updated_.clear();
+  moved_.clear();
+  surround(grid, a);
+  // The measuring pass's multipliers stand for the first iteration's where it updates the
+  // particle (the same pass from zero at the same positions); elsewhere they are zero, and only
+  // the updated particles it did not measure take the first iteration's pass.
+  for (std::uint32_t i : candidates) {
+    if (!std::binary_search(updated_.begin(), updated_.end(), i)) a.lambda[i] = a.lambda_step[i] = 0.0f;
+  }
+  unmeasured_.clear();
+  std::set_difference(updated_.begin(), updated_.end(), candidates.begin(), candidates.end(),
+                      std::back_inserter(unmeasured_));
   int iteration = 0;
   while (iteration < max_iterations && !placed_.empty()) {
     a.position = p.position.data()->data();
-    a.only = updated_.data();
-    a.only_count = updated_.size();
-    forms.lambda(a, c, grid);
+    const std::vector<std::uint32_t>& pass = iteration == 0 ? unmeasured_ : updated_;
+    a.only = pass.data();
+    a.only_count = pass.size();
+    if (!pass.empty()) forms.lambda(a, c, grid);
     a.position_next = next_position_.data()->data();
     a.only = moved_.data();
     a.only_count = moved_.size();
@@ -149,8 +168,14 @@ int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<co
       p.position[i] = next_position_[i];
     }
     ++iteration;
-    // Done once no placement is still over the limit (the lambda pass measured them all).
-    std::erase_if(placed_, [&](std::uint32_t i) { return placementExcess(p, density_at_start_, rho0, i) <= limit; });
+    // On while any particle the iteration updated is still compressed beyond the limit (the lambda
+    // pass measured them all), around those alone: the placement's pushes can press a neighbour
+    // beyond it, and a placement already within it needs no more.
+    placed_.clear();
+    for (std::uint32_t i : updated_) {
+      if (overLimit(i)) placed_.push_back(i);
+    }
+    if (!placed_.empty()) surround(grid, a);
   }
   a.only = nullptr;
   a.only_count = 0;

@@ -62,16 +62,21 @@ class LocalPlacement {
   // fresh(p) and their neighbours in `grid` (built on p), sorted.
   std::span<const std::uint32_t> watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
                                          const NeighborGrid& grid);
-  // The iterations of placeFresh over the `candidates`, whose densities the last constraint pass
-  // measured; `a` views p at its current positions, lambda carries on from its values,
-  // lambda_step is zeroed first.
+  // The iterations of placeFresh over the `candidates` (sorted), whose densities and multipliers
+  // from zero the last constraint pass measured, every other particle's zero; `a` views p at its
+  // current positions.
   int place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates, PbfArrays& a,
             const PbfConstants& c, const PbfPassForms& forms, float limit, int max_iterations, std::span<Vec3> carried);
+  // The sets an iteration works on, from placed_ (the particles still compressed beyond the
+  // limit): updated_, those and their neighbours, whose multipliers change; moved_, those and
+  // theirs, whose corrections do (every other particle has a zero change of multiplier, so a zero
+  // correction). Zeroes the last updated_'s changes; mark_ must be clear but for the last moved_.
+  void surround(const NeighborGrid& grid, PbfArrays& a);
 
   // Scratch, sized to the particles.
   std::vector<float> lambda_, lambda_step_, density_at_start_;
   std::vector<Vec3> next_position_, wall_grad_;
-  std::vector<std::uint32_t> fresh_, watched_, placed_, updated_, moved_;
+  std::vector<std::uint32_t> fresh_, watched_, placed_, updated_, moved_, unmeasured_;
   std::vector<std::uint8_t> mark_;
 };
 
