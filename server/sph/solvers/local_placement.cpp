@@ -15,16 +15,22 @@ float placementExcess(const ParticleSet& p, std::span<const float> at_start, flo
   return p.density[i] - std::max(at_start[i], rest_density);
 }
 
-// Appends to `out` the neighbours of `seeds` that `mark` does not have yet, and marks them.
-void addNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::vector<std::uint8_t>& mark,
-                       std::vector<std::uint32_t>& out) {
+// Marks `seeds` and their neighbours `value` where `mark` has less.
+void markNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::uint8_t value,
+                        std::vector<std::uint8_t>& mark) {
   for (std::uint32_t i : seeds) {
-    for (std::uint32_t j : grid.neighbors(i)) {
-      if (mark[j] == 0) {
-        mark[j] = 1;
-        out.push_back(j);
-      }
-    }
+    mark[i] = std::max(mark[i], value);
+    for (std::uint32_t j : grid.neighbors(i)) mark[j] = std::max(mark[j], value);
+  }
+}
+
+// The particles `mark` gives at least `value`, in index order: a scan of the marks rather than a
+// sort of the list, which took more time than the scan for the few thousand particles a placement
+// reaches.
+void collectMarked(const std::vector<std::uint8_t>& mark, std::uint8_t value, std::vector<std::uint32_t>& out) {
+  out.clear();
+  for (std::size_t i = 0; i < mark.size(); ++i) {
+    if (mark[i] >= value) out.push_back(static_cast<std::uint32_t>(i));
   }
 }
 
@@ -75,12 +81,10 @@ std::span<const std::uint32_t> LocalPlacement::fresh(const ParticleSet& p) {
 std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
                                                        const NeighborGrid& grid) {
   watched_.reserve(p.capacity());
-  watched_.assign(fresh.begin(), fresh.end());
   mark_.reserve(p.capacity());
   mark_.assign(p.size(), 0);
-  for (std::uint32_t i : fresh) mark_[i] = 1;
-  addNeighbourhoods(grid, fresh, mark_, watched_);
-  std::sort(watched_.begin(), watched_.end());
+  markNeighbourhoods(grid, fresh, 1, mark_);
+  collectMarked(mark_, 1, watched_);
   return watched_;
 }
 
@@ -114,14 +118,12 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
 void LocalPlacement::surround(const NeighborGrid& grid, PbfArrays& a) {
   // The last sets' multipliers stay as they are: only the new sets' change from here on.
   for (std::uint32_t i : updated_) a.lambda_step[i] = 0.0f;
-  for (std::uint32_t i : moved_) mark_[i] = 0;
-  updated_.assign(placed_.begin(), placed_.end());
-  for (std::uint32_t i : placed_) mark_[i] = 1;
-  addNeighbourhoods(grid, placed_, mark_, updated_);
-  std::sort(updated_.begin(), updated_.end());
-  moved_.assign(updated_.begin(), updated_.end());
-  addNeighbourhoods(grid, updated_, mark_, moved_);
-  std::sort(moved_.begin(), moved_.end());
+  constexpr std::uint8_t kUpdated = 2, kMoved = 1;
+  std::fill(mark_.begin(), mark_.end(), 0);
+  markNeighbourhoods(grid, placed_, kUpdated, mark_);
+  collectMarked(mark_, kUpdated, updated_);
+  markNeighbourhoods(grid, updated_, kMoved, mark_);
+  collectMarked(mark_, kMoved, moved_);
 }
 
 int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates,
@@ -141,7 +143,6 @@ int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<co
   if (placed_.empty()) return 0;
   mark_.assign(n, 0);
   updated_.clear();
-  moved_.clear();
   surround(grid, a);
   // The measuring pass's multipliers stand for the first iteration's where it updates the
   // particle (the same pass from zero at the same positions); elsewhere they are zero, and only

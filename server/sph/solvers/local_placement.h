@@ -70,7 +70,7 @@ class LocalPlacement {
   // The sets an iteration works on, from placed_ (the particles still compressed beyond the
   // limit): updated_, those and their neighbours, whose multipliers change; moved_, those and
   // theirs, whose corrections do (every other particle has a zero change of multiplier, so a zero
-  // correction). Zeroes the last updated_'s changes; mark_ must be clear but for the last moved_.
+  // correction). Zeroes the last updated_'s changes; mark_ is its scratch (sized to the particles).
   void surround(const NeighborGrid& grid, PbfArrays& a);
 
   // Scratch, sized to the particles.
