@@ -34,6 +34,19 @@ int finestWithin(const ParticleSet& p, const NeighborGrid& grid, const std::vect
   return finest;
 }
 
+// The finest level among particle i's neighbours (i of level `own`), `none` where it has none:
+// read in list order from the levels the grid keeps for lists of mixed levels; a list of one level
+// is all of i's (NeighborGrid::hasOtherSupport).
+int finestNeighbourLevel(const NeighborGrid& grid, std::size_t i, int own, int none) {
+  const std::uint32_t count = grid.neighborCount(i);
+  if (count == 0) return none;
+  if (!grid.hasOtherSupport(i)) return own;
+  const std::uint8_t* levels = grid.neighborLevels(i);
+  int finest = none;
+  for (std::uint32_t k = 0; k < count; ++k) finest = std::min(finest, static_cast<int>(levels[k]));
+  return finest;
+}
+
 // Where the eye sees particles on the display: their disc, eccentricity and distance.
 struct EyeView {
   Projector projector;
@@ -262,9 +275,8 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
     // The finest level within one neighbour hop (the particle itself included).
     for (std::size_t i = share.begin; i < share.end; ++i) {
-      int finest = levelIndex(p.level[i]);
-      for (const std::uint32_t j : grid.neighbors(i)) finest = std::min(finest, levelIndex(p.level[j]));
-      scratch.finest_near[i] = static_cast<std::int8_t>(finest);
+      const int own = levelIndex(p.level[i]);
+      scratch.finest_near[i] = static_cast<std::int8_t>(std::min(own, finestNeighbourLevel(grid, i, own, own)));
     }
 #pragma omp barrier
     // Pass 2: the targets and the decisions.
@@ -277,15 +289,23 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       const float allowed = seen ? scratch.allowed[i] * distance_ratio : scratch.allowed[i];
       // The finest level among the neighbours, and within two hops (grading), and the second
       // moment of the neighbours' offsets about i (hidden and shallow water).
-      int finest_neighbour = coarsest;
+      const int finest_neighbour = finestNeighbourLevel(grid, i, levelIndex(p.level[i]), coarsest);
       int finest_two_hops = scratch.finest_near[i];
-      Eigen::Matrix3f moment = Eigen::Matrix3f::Zero();
+      // The moment's six distinct entries, each summed in neighbour order as r r^T would.
+      const Vec3 xi = p.position[i];
+      float mxx = 0.0f, mxy = 0.0f, mxz = 0.0f, myy = 0.0f, myz = 0.0f, mzz = 0.0f;
       for (const std::uint32_t j : grid.neighbors(i)) {
-        finest_neighbour = std::min(finest_neighbour, levelIndex(p.level[j]));
         finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
-        const Eigen::Vector3f r = p.position[j] - p.position[i];
-        moment.noalias() += r * r.transpose();
+        const Vec3 r = p.position[j] - xi;
+        mxx += r.x() * r.x();
+        mxy += r.x() * r.y();
+        mxz += r.x() * r.z();
+        myy += r.y() * r.y();
+        myz += r.y() * r.z();
+        mzz += r.z() * r.z();
       }
+      Eigen::Matrix3f moment;
+      moment << mxx, mxy, mxz, mxy, myy, myz, mxz, myz, mzz;
       // The neighbours' spread, measured once and only where a rule reads it (an eigenvalue
       // solve where the determinant's bound does not settle it).
       float spread = -1.0f;
