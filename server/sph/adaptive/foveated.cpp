@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
 
@@ -170,7 +171,8 @@ double acuityRatio(const AdaptiveConfig& config, double e_deg) {
 
 DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, double gaze_x, double gaze_y,
                               const AdaptiveConfig& config, bool splits_only, std::span<std::int8_t> out,
-                              FoveatedScratch& scratch, FoveatedView& view) {
+                              FoveatedScratch& scratch, FoveatedView& view, const SplitPassScope* scope) {
+  if (scope != nullptr && !splits_only) throw std::invalid_argument("decideFoveated: a scope is for a split pass");
   ParticleSet& p = sim.particles();
   const std::size_t n = p.size();
   const NeighborGrid& grid = sim.grid();
@@ -221,6 +223,12 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
   scratch.depth.resize(n);
   scratch.finest_near.resize(n);
   const float last_fovea = scratch.fovea_depth;
+  // The particles decided: all, or the scope's (the others remain).
+  const std::size_t visits = scope != nullptr ? scope->particles.size() : n;
+  const auto visited = [&](std::size_t visit) -> std::size_t {
+    return scope != nullptr ? scope->particles[visit] : visit;
+  };
+  if (scope != nullptr) std::fill(out.begin(), out.end(), kRemain);
   // The gaze point's water (FoveaWater), the threads' combined.
   const float inf = std::numeric_limits<float>::infinity();
   FoveaWater fovea_water;
@@ -230,10 +238,11 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
                                    held_by_thin, held_waiting)
   {
     FoveaWater my_fovea_water;
-    const ThreadShare share = threadShare(n);
+    const ThreadShare share = threadShare(visits);
     // Pass 1: where each particle is seen (eccentricity, distance), the depth field, and the
     // nearest water at the gaze point.
-    for (std::size_t i = share.begin; i < share.end; ++i) {
+    for (std::size_t visit = share.begin; visit < share.end; ++visit) {
+      const std::size_t i = visited(visit);
       const EyeView::Seen seen = eye.see(p.position[i], p.radius[i]);
       const FastScreenDisc& disc = seen.disc;
       const float depth = seen.depth;
@@ -269,18 +278,22 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
 #pragma omp critical(sph_fovea_depth)
     fovea_water.combine(my_fovea_water);
 #pragma omp barrier
-    const float fovea = fovea_water.depth();
+    const float fovea = scope != nullptr ? scope->fovea_depth : fovea_water.depth();
     // The water at the gaze point: this step's where any water is on the display, else the last
     // step's, else this particle's own distance (every particle then as at the gaze).
     const float fovea_depth = std::isfinite(fovea) ? fovea : last_fovea;
-    // The finest level within one neighbour hop (the particle itself included).
-    for (std::size_t i = share.begin; i < share.end; ++i) {
-      const int own = levelIndex(p.level[i]);
-      scratch.finest_near[i] = static_cast<std::int8_t>(std::min(own, finestNeighbourLevel(grid, i, own, own)));
+    // The finest level within one neighbour hop (the particle itself included): for the merges'
+    // grading alone.
+    if (!splits_only) {
+      for (std::size_t i = share.begin; i < share.end; ++i) {
+        const int own = levelIndex(p.level[i]);
+        scratch.finest_near[i] = static_cast<std::int8_t>(std::min(own, finestNeighbourLevel(grid, i, own, own)));
+      }
     }
 #pragma omp barrier
     // Pass 2: the targets and the decisions.
-    for (std::size_t i = share.begin; i < share.end; ++i) {
+    for (std::size_t visit = share.begin; visit < share.end; ++visit) {
+      const std::size_t i = visited(visit);
       const int level = levelIndex(p.level[i]);
       const float depth = scratch.depth[i];
       const float distance_ratio = fovea_depth > 0.0f ? std::max(depth, 0.0f) / fovea_depth : 1.0f;
@@ -290,12 +303,12 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       // The finest level among the neighbours, and within two hops (grading), and the second
       // moment of the neighbours' offsets about i (hidden and shallow water).
       const int finest_neighbour = finestNeighbourLevel(grid, i, levelIndex(p.level[i]), coarsest);
-      int finest_two_hops = scratch.finest_near[i];
+      int finest_two_hops = splits_only ? level : scratch.finest_near[i];  // for the merges' grading
       // The moment's six distinct entries, each summed in neighbour order as r r^T would.
       const Vec3 xi = p.position[i];
       float mxx = 0.0f, mxy = 0.0f, mxz = 0.0f, myy = 0.0f, myz = 0.0f, mzz = 0.0f;
       for (const std::uint32_t j : grid.neighbors(i)) {
-        finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
+        if (!splits_only) finest_two_hops = std::min(finest_two_hops, static_cast<int>(scratch.finest_near[j]));
         const Vec3 r = p.position[j] - xi;
         mxx += r.x() * r.x();
         mxy += r.x() * r.y();
@@ -368,7 +381,7 @@ DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, doubl
       merge_wanted += decision == kMerge;
     }
   }
-  const float fovea = fovea_water.depth();
+  const float fovea = scope != nullptr ? scope->fovea_depth : fovea_water.depth();
   if (std::isfinite(fovea)) scratch.fovea_depth = fovea;
   view.still_coarse = still_coarse;
   if (!splits_only) view.held = {held_by_eye, held_by_grading, held_by_thin, held_waiting};

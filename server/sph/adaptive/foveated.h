@@ -89,11 +89,20 @@ struct FoveatedScratch {
 // surface layer coarse where the eye sees it. Returns the sweeps taken.
 int settleSurfaceDistance(Simulation& sim, const AdaptiveConfig& config, FoveatedScratch& scratch);
 
+// A further split pass decided for part of the water: `particles` (ascending) and the distance of
+// the water at the gaze point as the last changes left it (foveaWaterDepth; inf: none on the
+// display). Every other particle remains.
+struct SplitPassScope {
+  std::span<const std::uint32_t> particles;
+  float fovea_depth = 0.0f;
+};
+
 // Decides for every particle (out[i]) and returns the counts. `gaze_x`, `gaze_y`: normalized screen
-// coordinates (origin top left). `splits_only`: no merges (a further split pass in the same step).
+// coordinates (origin top left). `splits_only`: no merges (a further split pass in the same step),
+// for the particles of `scope` alone where one is given.
 DecisionCounts decideFoveated(Simulation& sim, const ScreenCamera& camera, double gaze_x, double gaze_y,
                               const AdaptiveConfig& config, bool splits_only, std::span<std::int8_t> out,
-                              FoveatedScratch& scratch, FoveatedView& view);
+                              FoveatedScratch& scratch, FoveatedView& view, const SplitPassScope* scope = nullptr);
 
 // The eye's allowance at eccentricity `e_deg`: MAR(e) / MAR(0).
 double acuityRatio(const AdaptiveConfig& config, double e_deg);

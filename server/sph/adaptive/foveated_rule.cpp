@@ -30,27 +30,46 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
   // a saccade), the step splits again, level by level, so the eye finds the finest level at once
   // rather than a level a frame later. Water the eye does not see (hidden, off the display) and
   // the rules that do not come from the eye (thin, shallow, graded) split a level a step: a
-  // further pass costs a neighbour search and a decision over all the water.
+  // further pass costs a neighbour search and a decision.
   // The decision sized the step to the water at the gaze point as it found it; its own changes
   // can leave farther water there (the particle under the gaze split, its children off the gaze
-  // point), from which the eye allows every particle less: a further pass then sizes it again.
+  // point), from which the eye allows every particle less: a further pass then decides for all
+  // the water. Otherwise only the particles the last changes placed and their neighbours can
+  // decide otherwise than the step's first decision did (every other particle's level, neighbours
+  // and allowance are as they were), and a further pass decides for them alone.
   int changed = counts.splits + counts.merges;
-  const auto foveaMovedAway = [&] {
-    if (changed == 0) return false;
-    const float now = foveaWaterDepth(sim.particles(), in.camera, gx, gy, in.config);
-    return std::isfinite(now) && now > view.fovea_depth;
-  };
   for (int pass = 2; pass <= in.levels; ++pass) {
     const bool still_coarse = pass < in.levels && view.still_coarse > 0;
-    if (!still_coarse && !foveaMovedAway()) break;
+    const float fovea_now =
+        changed == 0 ? view.fovea_depth : foveaWaterDepth(sim.particles(), in.camera, gx, gy, in.config);
+    const bool moved_away = std::isfinite(fovea_now) && fovea_now > view.fovea_depth;
+    if (!still_coarse && !moved_away) break;
     sim.rebuildNeighbors();
-    const DecisionCounts more = decideFoveated(sim, in.camera, gx, gy, in.config, true,
-                                               changes.decisions(sim.particles().size()), scratch_, view);
+    const std::span<std::int8_t> decisions = changes.decisions(sim.particles().size());
+    SplitPassScope scope{freshNeighbourhoods(sim), fovea_now};
+    const DecisionCounts more = decideFoveated(sim, in.camera, gx, gy, in.config, true, decisions, scratch_, view,
+                                               moved_away ? nullptr : &scope);
     stats.split_wanted += more.split_wanted;
     ++stats.split_passes;
     changed = changes.applySplits(sim);
     stats.splits += changed;
   }
+}
+
+std::span<const std::uint32_t> FoveatedRule::freshNeighbourhoods(const Simulation& sim) {
+  const ParticleSet& p = sim.particles();
+  const NeighborGrid& grid = sim.grid();
+  mark_.assign(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.placed[i] != kPlacedThisFrame) continue;
+    mark_[i] = 1;
+    for (const std::uint32_t j : grid.neighbors(i)) mark_[j] = 1;
+  }
+  fresh_neighbourhoods_.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (mark_[i] != 0) fresh_neighbourhoods_.push_back(static_cast<std::uint32_t>(i));
+  }
+  return fresh_neighbourhoods_;
 }
 
 void FoveatedRule::measure(const Simulation& sim, const RuleInput& in, AdaptiveStats& stats) {

@@ -4,6 +4,10 @@
 // what the eye gets measured apart from the rule (perceptual_budget.h).
 #pragma once
 
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include "sph/adaptive/adaptive_rule.h"
 #include "sph/adaptive/foveated.h"
 #include "sph/adaptive/perceptual_budget.h"
@@ -21,8 +25,14 @@ class FoveatedRule : public AdaptiveRule {
   void measure(const Simulation& sim, const RuleInput& in, AdaptiveStats& stats) override;
 
  private:
+  // The particles the step has placed (split children, merged particles) and their neighbours,
+  // ascending.
+  std::span<const std::uint32_t> freshNeighbourhoods(const Simulation& sim);
+
   FoveatedScratch scratch_;
   PerceptualBudgetMeter meter_;
+  std::vector<std::uint8_t> mark_;
+  std::vector<std::uint32_t> fresh_neighbourhoods_;
 };
 
 }  // namespace sph
