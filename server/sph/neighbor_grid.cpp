@@ -167,6 +167,19 @@ void NeighborGrid::build(const ParticleSet& particles) {
   }
 }
 
+void collectNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds,
+                           std::vector<std::uint8_t>& mark, std::vector<std::uint32_t>& out) {
+  mark.assign(grid.neighborCounts().size(), 0);
+  for (const std::uint32_t i : seeds) {
+    mark[i] = 1;
+    for (const std::uint32_t j : grid.neighbors(i)) mark[j] = 1;
+  }
+  out.clear();
+  for (std::size_t i = 0; i < mark.size(); ++i) {
+    if (mark[i] != 0) out.push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
 double NeighborGrid::meanNeighbors() const {
   if (neighbor_count_.empty()) return 0.0;
   double sum = 0.0;

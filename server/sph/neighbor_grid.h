@@ -110,4 +110,10 @@ class NeighborGrid {
   std::vector<std::int32_t> level_;           // each particle's level, as the level fill gathers it
 };
 
+// `seeds` and their neighbours in `grid`, ascending, into `out`: marks (`mark`, scratch, sized to
+// the grid's particles and cleared here) scanned in index order, which for the few thousand
+// particles a placement or a split pass reaches costs less than sorting a list.
+void collectNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds,
+                           std::vector<std::uint8_t>& mark, std::vector<std::uint32_t>& out);
+
 }  // namespace sph

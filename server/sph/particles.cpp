@@ -179,6 +179,13 @@ std::array<std::size_t, kMaxLevels> ParticleSet::countByLevel() const {
   return n;
 }
 
+void ParticleSet::freshPlacements(std::vector<std::uint32_t>& out) const {
+  out.clear();
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (placed[i] == kPlacedThisFrame) out.push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
 std::size_t ParticleSet::countOf(Level c) const {
   std::size_t n = 0;
   for (Level s : level) n += (s == c);

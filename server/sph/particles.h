@@ -66,6 +66,9 @@ class ParticleSet : public ParticleAttributes {
   std::size_t countOf(Level c) const;
   // The particles of each level, L0 first, in one pass.
   std::array<std::size_t, kMaxLevels> countByLevel() const;
+  // The particles the adaptive step placed since the last frame (`placed` kPlacedThisFrame: split
+  // children, merged particles), ascending, into `out`.
+  void freshPlacements(std::vector<std::uint32_t>& out) const;
 
   // f(vector) for every attribute, in declaration order.
   template <typename F>

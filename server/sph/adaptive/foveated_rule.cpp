@@ -46,7 +46,12 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
     if (!still_coarse && !moved_away) break;
     sim.rebuildNeighbors();
     const std::span<std::int8_t> decisions = changes.decisions(sim.particles().size());
-    SplitPassScope scope{freshNeighbourhoods(sim), fovea_now};
+    SplitPassScope scope;
+    if (!moved_away) {
+      sim.particles().freshPlacements(fresh_);
+      collectNeighbourhoods(sim.grid(), fresh_, mark_, fresh_neighbourhoods_);
+      scope = {fresh_neighbourhoods_, fovea_now};
+    }
     const DecisionCounts more = decideFoveated(sim, in.camera, gx, gy, in.config, true, decisions, scratch_, view,
                                                moved_away ? nullptr : &scope);
     stats.split_wanted += more.split_wanted;
@@ -54,22 +59,6 @@ void FoveatedRule::step(Simulation& sim, const RuleInput& in, LevelChanges& chan
     changed = changes.applySplits(sim);
     stats.splits += changed;
   }
-}
-
-std::span<const std::uint32_t> FoveatedRule::freshNeighbourhoods(const Simulation& sim) {
-  const ParticleSet& p = sim.particles();
-  const NeighborGrid& grid = sim.grid();
-  mark_.assign(p.size(), 0);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.placed[i] != kPlacedThisFrame) continue;
-    mark_[i] = 1;
-    for (const std::uint32_t j : grid.neighbors(i)) mark_[j] = 1;
-  }
-  fresh_neighbourhoods_.clear();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (mark_[i] != 0) fresh_neighbourhoods_.push_back(static_cast<std::uint32_t>(i));
-  }
-  return fresh_neighbourhoods_;
 }
 
 void FoveatedRule::measure(const Simulation& sim, const RuleInput& in, AdaptiveStats& stats) {

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "sph/adaptive/adaptive_rule.h"
@@ -25,14 +24,11 @@ class FoveatedRule : public AdaptiveRule {
   void measure(const Simulation& sim, const RuleInput& in, AdaptiveStats& stats) override;
 
  private:
-  // The particles the step has placed (split children, merged particles) and their neighbours,
-  // ascending.
-  std::span<const std::uint32_t> freshNeighbourhoods(const Simulation& sim);
-
   FoveatedScratch scratch_;
   PerceptualBudgetMeter meter_;
+  // A further split pass's scratch: the step's placements, them and their neighbours, the marks.
+  std::vector<std::uint32_t> fresh_, fresh_neighbourhoods_;
   std::vector<std::uint8_t> mark_;
-  std::vector<std::uint32_t> fresh_neighbourhoods_;
 };
 
 }  // namespace sph

@@ -15,25 +15,6 @@ float placementExcess(const ParticleSet& p, std::span<const float> at_start, flo
   return p.density[i] - std::max(at_start[i], rest_density);
 }
 
-// Marks `seeds` and their neighbours `value` where `mark` has less.
-void markNeighbourhoods(const NeighborGrid& grid, std::span<const std::uint32_t> seeds, std::uint8_t value,
-                        std::vector<std::uint8_t>& mark) {
-  for (std::uint32_t i : seeds) {
-    mark[i] = std::max(mark[i], value);
-    for (std::uint32_t j : grid.neighbors(i)) mark[j] = std::max(mark[j], value);
-  }
-}
-
-// The particles `mark` gives at least `value`, in index order: a scan of the marks rather than a
-// sort of the list, which took more time than the scan for the few thousand particles a placement
-// reaches.
-void collectMarked(const std::vector<std::uint8_t>& mark, std::uint8_t value, std::vector<std::uint32_t>& out) {
-  out.clear();
-  for (std::size_t i = 0; i < mark.size(); ++i) {
-    if (mark[i] >= value) out.push_back(static_cast<std::uint32_t>(i));
-  }
-}
-
 }  // namespace
 
 PbfConstants pbfConstantsOf(const SimParams& params, const IncompressibleSetup& setup) {
@@ -69,29 +50,11 @@ PbfArrays pbfArraysOf(ParticleSet& p, std::vector<float>& lambda, std::vector<fl
   return a;
 }
 
-std::span<const std::uint32_t> LocalPlacement::fresh(const ParticleSet& p) {
-  fresh_.reserve(p.capacity());
-  fresh_.clear();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.placed[i] == kPlacedThisFrame) fresh_.push_back(static_cast<std::uint32_t>(i));
-  }
-  return fresh_;
-}
-
-std::span<const std::uint32_t> LocalPlacement::watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
-                                                       const NeighborGrid& grid) {
-  watched_.reserve(p.capacity());
-  mark_.reserve(p.capacity());
-  mark_.assign(p.size(), 0);
-  markNeighbourhoods(grid, fresh, 1, mark_);
-  collectMarked(mark_, 1, watched_);
-  return watched_;
-}
-
 int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, const PbfConstants& c, float limit,
                                int max_iterations, std::span<Vec3> carried) {
-  const std::span<const std::uint32_t> placements = fresh(p);
-  if (placements.empty()) return 0;
+  fresh_.reserve(p.capacity());
+  p.freshPlacements(fresh_);
+  if (fresh_.empty()) return 0;
   const std::size_t n = p.size();
   for (auto* v : {&lambda_, &lambda_step_, &density_at_start_}) v->reserve(p.capacity());
   for (auto* v : {&next_position_, &wall_grad_}) v->reserve(p.capacity());
@@ -103,7 +66,9 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
   if (state == Grid::kBuild) grid.build(p);
   PbfArrays a = pbfArraysOf(p, lambda_, lambda_step_, wall_grad_);
   const PbfPassForms forms = pbfPassForms();
-  const std::span<const std::uint32_t> candidates = watched(p, placements, grid);
+  watched_.reserve(p.capacity());
+  collectNeighbourhoods(grid, fresh_, mark_, watched_);
+  const std::span<const std::uint32_t> candidates = watched_;
   // The candidates' densities where they stand, and the multipliers the first iteration's pass
   // would give them from zero: place() keeps those of the particles it updates.
   a.position = p.position.data()->data();
@@ -118,22 +83,16 @@ int LocalPlacement::placeFresh(ParticleSet& p, NeighborGrid& grid, Grid state, c
 void LocalPlacement::surround(const NeighborGrid& grid, PbfArrays& a) {
   // The last sets' multipliers stay as they are: only the new sets' change from here on.
   for (std::uint32_t i : updated_) a.lambda_step[i] = 0.0f;
-  constexpr std::uint8_t kUpdated = 2, kMoved = 1;
-  std::fill(mark_.begin(), mark_.end(), 0);
-  markNeighbourhoods(grid, placed_, kUpdated, mark_);
-  collectMarked(mark_, kUpdated, updated_);
-  markNeighbourhoods(grid, updated_, kMoved, mark_);
-  collectMarked(mark_, kMoved, moved_);
+  collectNeighbourhoods(grid, placed_, mark_, updated_);
+  collectNeighbourhoods(grid, updated_, mark_, moved_);
 }
 
 int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<const std::uint32_t> candidates,
                           PbfArrays& a, const PbfConstants& c, const PbfPassForms& forms, float limit,
                           int max_iterations, std::span<Vec3> carried) {
-  const std::size_t n = p.size();
   const float rho0 = c.rest_density;
   const std::size_t room = p.capacity();
   for (auto* v : {&placed_, &updated_, &moved_, &unmeasured_}) v->reserve(room);
-  mark_.reserve(room);
   const auto overLimit = [&](std::uint32_t i) { return placementExcess(p, density_at_start_, rho0, i) > limit; };
   // The candidates compressed beyond the limit.
   placed_.clear();
@@ -141,7 +100,6 @@ int LocalPlacement::place(ParticleSet& p, const NeighborGrid& grid, std::span<co
     if (overLimit(i)) placed_.push_back(i);
   }
   if (placed_.empty()) return 0;
-  mark_.assign(n, 0);
   updated_.clear();
   surround(grid, a);
   // The measuring pass's multipliers stand for the first iteration's where it updates the

@@ -57,11 +57,6 @@ class LocalPlacement {
                  std::span<Vec3> carried = {});
 
  private:
-  // The particles marked kPlacedThisFrame, in order.
-  std::span<const std::uint32_t> fresh(const ParticleSet& p);
-  // fresh(p) and their neighbours in `grid` (built on p), sorted.
-  std::span<const std::uint32_t> watched(const ParticleSet& p, std::span<const std::uint32_t> fresh,
-                                         const NeighborGrid& grid);
   // The iterations of placeFresh over the `candidates` (sorted), whose densities and multipliers
   // from zero the last constraint pass measured, every other particle's zero; `a` views p at its
   // current positions.
@@ -70,7 +65,7 @@ class LocalPlacement {
   // The sets an iteration works on, from placed_ (the particles still compressed beyond the
   // limit): updated_, those and their neighbours, whose multipliers change; moved_, those and
   // theirs, whose corrections do (every other particle has a zero change of multiplier, so a zero
-  // correction). Zeroes the last updated_'s changes; mark_ is its scratch (sized to the particles).
+  // correction). Zeroes the last updated_'s changes.
   void surround(const NeighborGrid& grid, PbfArrays& a);
 
   // Scratch, sized to the particles.
